@@ -1,0 +1,149 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "polyMeshWalls.H"
+#include "fvMesh.H"
+#include "volFields.H"
+#include "wallPolyPatch.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::polyMeshWalls::polyMeshWalls
+(
+    const fvMesh& mesh,
+    const wordList& patches
+)
+:
+    mesh_(mesh),
+    zMid_(0)
+{
+    const pointField& pts = mesh.points();
+    const boundBox bb(pts);
+    const scalar zMin = bb.min().z();
+    const scalar thickness = bb.max().z() - zMin;
+    const scalar tol = 1e-6*max(thickness, bb.mag());
+    zMid_ = zMin + 0.5*thickness;
+
+    for (const point& p : pts)
+    {
+        if (mag(p.z() - zMin) > tol && mag(p.z() - bb.max().z()) > tol)
+        {
+            FatalErrorInFunction
+                << "The mesh in " << mesh.polyMesh::objectPath()
+                << " is not 2-D: point " << p << " is neither on z = " << zMin
+                << " nor on z = " << bb.max().z() << nl
+                << "Make it one cell thick in z (front and back patches empty)."
+                << exit(FatalError);
+        }
+    }
+
+    const polyBoundaryMesh& bm = mesh.boundaryMesh();
+    if (patches.empty())
+    {
+        for (const polyPatch& pp : bm)
+        {
+            if (isA<wallPolyPatch>(pp))
+            {
+                patchNames_.append(pp.name());
+            }
+        }
+    }
+    else
+    {
+        patchNames_ = patches;
+    }
+
+    chains_.setSize(patchNames_.size());
+    forAll(patchNames_, i)
+    {
+        const label patchi = bm.findPatchID(patchNames_[i]);
+        if (patchi < 0)
+        {
+            FatalErrorInFunction
+                << "No patch " << patchNames_[i] << " in "
+                << bm.objectPath() << nl << "Patches: " << bm.names()
+                << exit(FatalError);
+        }
+        const polyPatch& pp = bm[patchi];
+        const vectorField& n = pp.faceAreas();
+        forAll(pp, facei)
+        {
+            // The two corners of the face in the back plane
+            DynamicList<vector2D> back;
+            for (const label pi : pp[facei])
+            {
+                if (mag(pts[pi].z() - zMin) <= tol)
+                {
+                    back.append(vector2D(pts[pi].x(), pts[pi].y()));
+                }
+            }
+            if (back.size() != 2)
+            {
+                continue;   // not a face across the thickness
+            }
+            // Face normals point out of the domain: fluid on the left of a->b
+            // means the left normal of (b - a) points against n
+            const vector2D t = back[1] - back[0];
+            const vector2D left(-t.y(), t.x());
+            wallChain c;
+            c.closed = false;
+            c.points.setSize(2);
+            const bool keep = (left.x()*n[facei].x() + left.y()*n[facei].y()) < 0;
+            c.points[0] = keep ? back[0] : back[1];
+            c.points[1] = keep ? back[1] : back[0];
+            chains_[i].append(c);
+        }
+        if (chains_[i].empty())
+        {
+            FatalErrorInFunction
+                << "Patch " << patchNames_[i] << " has no face across the 2-D"
+                << " mesh's thickness: it cannot be a wall" << exit(FatalError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::polyMeshWalls::readFraction(const word& fieldName)
+{
+    volScalarField alpha
+    (
+        IOobject
+        (
+            fieldName,
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_
+    );
+    fraction_ = alpha.primitiveField();
+}
+
+
+bool Foam::SPH::polyMeshWalls::inside(const vector2D& p) const
+{
+    return mesh_.findCell(point(p.x(), p.y(), zMid_)) >= 0;
+}
+
+
+bool Foam::SPH::polyMeshWalls::isFluid(const vector2D& p) const
+{
+    const label celli = mesh_.findCell(point(p.x(), p.y(), zMid_));
+    return celli >= 0 && fraction_[celli] > 0.5;
+}
+
+
+void Foam::SPH::polyMeshWalls::bounds(vector2D& lo, vector2D& hi) const
+{
+    const boundBox bb(mesh_.points());
+    lo = vector2D(bb.min().x(), bb.min().y());
+    hi = vector2D(bb.max().x(), bb.max().y());
+}
+
+
+// ************************************************************************* //

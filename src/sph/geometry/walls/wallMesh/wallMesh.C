@@ -1,0 +1,526 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "wallMesh.H"
+#include "DynamicList.H"
+#include "IOField.H"
+#include "IOList.H"
+#include "vector2DIOField.H"
+#include "labelIOField.H"
+#include "scalarIOField.H"
+#include "Time.H"
+#include "mathematicalConstants.H"
+#include "HashTable.H"
+
+#include <unordered_map>
+
+using Foam::constant::mathematical::pi;
+
+namespace Foam
+{
+    // Segments are stored as a list of vertex pairs
+    defineTemplateTypeNameAndDebugWithName(IOList<labelPair>, "labelPairList", 0);
+}
+
+namespace
+{
+    using namespace Foam;
+
+    //- Cross product z-component
+    inline scalar cross2D(const vector2D& a, const vector2D& b)
+    {
+        return a.x()*b.y() - a.y()*b.x();
+    }
+
+    //- The tangent turned by +90 degrees: the normal on the left
+    inline vector2D leftNormal(const vector2D& t)
+    {
+        return vector2D(-t.y(), t.x());
+    }
+
+    const fileName wallsLocal("sphMesh/walls");
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::SPH::wallMesh::endPoint
+(
+    const vector2D& p,
+    label patchi,
+    scalar tol
+)
+{
+    // Chain ends are few: a linear search over the vertices with one segment
+    forAll(points_, i)
+    {
+        if
+        (
+            (segmentIn_[i] < 0 || segmentOut_[i] < 0)
+         && mag(points_[i] - p) < tol
+        )
+        {
+            return i;
+        }
+    }
+    points_.append(p);
+    pointPatch_.append(patchi);
+    segmentIn_.append(-1);
+    segmentOut_.append(-1);
+    return points_.size() - 1;
+}
+
+
+void Foam::SPH::wallMesh::addChain
+(
+    const wallChain& chain,
+    label patchi,
+    scalar dr
+)
+{
+    const UList<vector2D>& knots = chain.points;
+    const label nEdges = chain.closed ? knots.size() : knots.size() - 1;
+    const scalar tol = 1e-6*dr;
+
+    // Split every edge into pieces of length close to dr
+    DynamicList<vector2D> pts;
+    for (label e = 0; e < nEdges; ++e)
+    {
+        const vector2D& a = knots[e];
+        const vector2D& b = knots[(e + 1) % knots.size()];
+        const label n = max(label(1), label(std::round(mag(b - a)/dr)));
+        for (label k = 0; k < n; ++k)
+        {
+            pts.append(a + (b - a)*(scalar(k)/n));
+        }
+    }
+    if (!chain.closed)
+    {
+        pts.append(knots.last());
+    }
+
+    // Vertices: the ends of open chains may join other chains
+    labelList ids(pts.size());
+    forAll(pts, i)
+    {
+        const bool isEnd = !chain.closed && (i == 0 || i == pts.size() - 1);
+        if (isEnd)
+        {
+            ids[i] = endPoint(pts[i], patchi, tol);
+        }
+        else
+        {
+            points_.append(pts[i]);
+            pointPatch_.append(patchi);
+            segmentIn_.append(-1);
+            segmentOut_.append(-1);
+            ids[i] = points_.size() - 1;
+        }
+    }
+
+    const label nSeg = chain.closed ? ids.size() : ids.size() - 1;
+    for (label i = 0; i < nSeg; ++i)
+    {
+        const label a = ids[i];
+        const label b = ids[(i + 1) % ids.size()];
+        if (segmentOut_[a] >= 0 || segmentIn_[b] >= 0)
+        {
+            const label v = segmentOut_[a] >= 0 ? a : b;
+            FatalErrorInFunction
+                << "Wall patches " << patchNames_[segmentPatch_[max(segmentOut_[v], segmentIn_[v])]]
+                << " and " << patchNames_[patchi] << " meet at "
+                << points_[v] << " with the fluid on opposite sides." << nl
+                << "Walls that join must agree on the fluid side: check their"
+                << " 'side' entries or the order of their points." << nl
+                << exit(FatalError);
+        }
+        segments_.append(labelPair(a, b));
+        segmentPatch_.append(patchi);
+        segmentOut_[a] = segments_.size() - 1;
+        segmentIn_[b] = segments_.size() - 1;
+    }
+}
+
+
+void Foam::SPH::wallMesh::calcGeometry()
+{
+    segmentNormals_.setSize(segments_.size());
+    forAll(segments_, s)
+    {
+        const vector2D t = points_[segments_[s].second()] - points_[segments_[s].first()];
+        segmentNormals_[s] = leftNormal(t/mag(t));
+    }
+
+    pointNormals_.setSize(points_.size());
+    pointAngles_.setSize(points_.size());
+    forAll(points_, v)
+    {
+        const label sIn = segmentIn_[v];
+        const label sOut = segmentOut_[v];
+        if (sIn < 0 || sOut < 0)
+        {
+            // Free end of an open wall: treated as straight
+            pointAngles_[v] = pi;
+            pointNormals_[v] = segmentNormals_[max(sIn, sOut)];
+            continue;
+        }
+        const vector2D tIn = leftNormal(segmentNormals_[sIn])*(-1);
+        const vector2D tOut = leftNormal(segmentNormals_[sOut])*(-1);
+
+        // Fluid-side angle: pi minus the (signed) turn to the left
+        const scalar turn = std::atan2(cross2D(tIn, tOut), tIn & tOut);
+        pointAngles_[v] = pi - turn;
+
+        // Bisector pointing into the fluid
+        vector2D n = segmentNormals_[sIn] + segmentNormals_[sOut];
+        if (mag(n) < 1e-10)
+        {
+            // Hairpin: the bisector is along the incoming tangent
+            n = (pointAngles_[v] > pi) ? tIn : -tIn;
+        }
+        pointNormals_[v] = n/mag(n);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::wallMesh::wallMesh
+(
+    const wordList& patchNames,
+    const List<List<wallChain>>& patchChains,
+    const scalar dr
+)
+:
+    patchNames_(patchNames)
+{
+    DynamicList<vector2D> dummyPts;
+    forAll(patchChains, patchi)
+    {
+        for (const wallChain& c : patchChains[patchi])
+        {
+            addChain(c, patchi, dr);
+        }
+    }
+    if (segments_.empty())
+    {
+        FatalErrorInFunction
+            << "No wall segments: at least one wall patch is needed"
+            << exit(FatalError);
+    }
+    calcGeometry();
+}
+
+
+Foam::SPH::wallMesh::wallMesh(const objectRegistry& db)
+{
+    const word inst = db.time().constant();
+    auto io = [&](const word& name)
+    {
+        return IOobject(name, inst, wallsLocal, db, IOobject::MUST_READ,
+                        IOobject::NO_WRITE, false);
+    };
+
+    patchNames_ = IOList<word>(io("patchNames"));
+    points_ = List<vector2D>(vector2DIOField(io("points")));
+    pointPatch_ = labelList(labelIOField(io("pointPatch")));
+    segments_ = List<labelPair>(IOList<labelPair>(io("segments")));
+    segmentPatch_ = labelList(labelIOField(io("segmentPatch")));
+
+    segmentIn_ = labelList(points_.size(), -1);
+    segmentOut_ = labelList(points_.size(), -1);
+    forAll(segments_, s)
+    {
+        const labelPair& e = segments_[s];
+        if (min(e.first(), e.second()) < 0 || max(e.first(), e.second()) >= points_.size())
+        {
+            FatalErrorInFunction
+                << "Segment " << s << " " << e << " in "
+                << io("segments").objectPath() << " refers to a vertex outside 0.."
+                << points_.size() - 1 << exit(FatalError);
+        }
+        segmentOut_[e.first()] = s;
+        segmentIn_[e.second()] = s;
+    }
+    calcGeometry();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::SPH::wallMesh::segmentLength(label s) const
+{
+    return mag(points_[segments_[s].second()] - points_[segments_[s].first()]);
+}
+
+
+Foam::scalar Foam::SPH::wallMesh::signedDistance(const vector2D& p) const
+{
+    scalar best = GREAT;
+    scalar sign = 1;
+    forAll(segments_, s)
+    {
+        const vector2D& a = points_[segments_[s].first()];
+        const vector2D& b = points_[segments_[s].second()];
+        const vector2D ab = b - a;
+        const scalar t = min(max(((p - a) & ab)/magSqr(ab), 0.0), 1.0);
+        const vector2D d = p - (a + t*ab);
+        const scalar dist = mag(d);
+        if (dist < best)
+        {
+            best = dist;
+            vector2D n = segmentNormals_[s];
+            if (t <= 0) n = pointNormals_[segments_[s].first()];
+            else if (t >= 1) n = pointNormals_[segments_[s].second()];
+            sign = ((d & n) >= 0) ? 1 : -1;
+        }
+    }
+    return sign*best;
+}
+
+
+void Foam::SPH::wallMesh::bounds(vector2D& lo, vector2D& hi) const
+{
+    lo = vector2D(GREAT, GREAT);
+    hi = vector2D(-GREAT, -GREAT);
+    for (const vector2D& p : points_)
+    {
+        lo = min(lo, p);
+        hi = max(hi, p);
+    }
+}
+
+
+Foam::List<Foam::labelList> Foam::SPH::wallMesh::tracedChains() const
+{
+    DynamicList<labelList> chains;
+    boolList visited(segments_.size(), false);
+
+    auto trace = [&](label s)
+    {
+        DynamicList<label> verts;
+        verts.append(segments_[s].first());
+        while (s >= 0 && !visited[s])
+        {
+            visited[s] = true;
+            verts.append(segments_[s].second());
+            s = segmentOut_[segments_[s].second()];
+        }
+        chains.append(verts);
+    };
+
+    // Open chains start at vertices with no incoming segment
+    forAll(points_, v)
+    {
+        if (segmentIn_[v] < 0 && segmentOut_[v] >= 0)
+        {
+            trace(segmentOut_[v]);
+        }
+    }
+    // What is left are closed loops (first vertex repeated at the end)
+    forAll(segments_, s)
+    {
+        if (!visited[s])
+        {
+            trace(s);
+        }
+    }
+    return List<labelList>(std::move(chains));
+}
+
+
+bool Foam::SPH::wallMesh::offsetChain
+(
+    const labelList& chain,
+    scalar d,
+    scalar dr,
+    DynamicList<vector2D>& pts,
+    DynamicList<label>& patch
+) const
+{
+    const bool closed = chain.first() == chain.last();
+
+    // Outward (non-fluid side) normal of the segment leaving chain[i]
+    auto outNormal = [&](label i)
+    {
+        return -segmentNormals_[segmentOut_[chain[i]]];
+    };
+    const label nSeg = chain.size() - 1;
+
+    // Corners only: where the direction changes (and the ends)
+    DynamicList<label> knots;    // index in chain
+    for (label i = 0; i < nSeg; ++i)
+    {
+        const bool end = (i == 0 && !closed);
+        const label sIn = segmentIn_[chain[i]];
+        if (end || sIn < 0 || mag(cross2D(segmentNormals_[sIn], outNormal(i))) > 1e-8)
+        {
+            knots.append(i);
+        }
+    }
+    if (!closed)
+    {
+        knots.append(nSeg);
+    }
+    if (knots.empty())
+    {
+        knots.append(0);   // a closed chain without corners cannot happen
+    }
+
+    // Mitred offset of each corner
+    List<vector2D> offset(knots.size());
+    forAll(knots, k)
+    {
+        const label i = knots[k];
+        const label v = chain[i];
+        const label sIn = segmentIn_[v];
+        const label sOut = segmentOut_[v];
+        const bool hasIn = sIn >= 0 && (closed || i > 0);
+        const bool hasOut = sOut >= 0 && (closed || i < nSeg);
+        vector2D m;
+        if (hasIn && hasOut)
+        {
+            const vector2D m1 = -segmentNormals_[sIn];
+            const vector2D m2 = -segmentNormals_[sOut];
+            const scalar c = 1 + (m1 & m2);
+            m = (c > 0.1) ? (m1 + m2)/c : (m1 + m2)/0.1;
+        }
+        else
+        {
+            m = -segmentNormals_[hasIn ? sIn : sOut];
+        }
+        offset[k] = points_[v] + d*m;
+    }
+
+    // Split every offset edge into pieces of about dr; a reversed edge
+    // means the offset has collapsed (a thin body)
+    const label nEdges = closed ? knots.size() : knots.size() - 1;
+    const label start = pts.size();
+    for (label e = 0; e < nEdges; ++e)
+    {
+        const label k1 = (e + 1) % knots.size();
+        const vector2D a = offset[e];
+        const vector2D b = offset[k1];
+        const vector2D orig =
+            points_[chain[closed && k1 == 0 ? nSeg : knots[k1]]] - points_[chain[knots[e]]];
+        if (((b - a) & orig) <= 0)
+        {
+            pts.setSize(start);
+            patch.setSize(start);
+            return false;
+        }
+        const label patchi = segmentPatch_[segmentOut_[chain[knots[e]]]];
+        const label n = max(label(1), label(std::round(mag(b - a)/dr)));
+        const label nPts = (!closed && e == nEdges - 1) ? n + 1 : n;
+        for (label j = 0; j < nPts; ++j)
+        {
+            pts.append(a + (b - a)*(scalar(j)/n));
+            patch.append(patchi);
+        }
+    }
+    return true;
+}
+
+
+void Foam::SPH::wallMesh::dummyLayers
+(
+    label nLayers,
+    scalar dr,
+    List<vector2D>& positions,
+    labelList& layer,
+    labelList& patch
+) const
+{
+    DynamicList<vector2D> pts(points_);
+    DynamicList<label> lay(labelList(points_.size(), 0));
+    DynamicList<label> pat(pointPatch_);
+
+    const List<labelList> chains(tracedChains());
+    for (label k = 1; k < nLayers; ++k)
+    {
+        for (const labelList& chain : chains)
+        {
+            if (offsetChain(chain, k*dr, dr, pts, pat))
+            {
+                lay.setSize(pts.size(), k);
+            }
+        }
+    }
+
+    // Keep a dummy unless it lies on the fluid side of some wall or within
+    // dr/2 of one already kept (where chains meet or overlap)
+    const scalar cell = 0.5*dr;
+    std::unordered_map<int64_t, DynamicList<label>> grid;
+    auto key = [](int64_t i, int64_t j) { return (i << 32) ^ (j & 0xffffffff); };
+
+    DynamicList<label> keep;
+    forAll(pts, i)
+    {
+        const vector2D& p = pts[i];
+        if (lay[i] > 0 && signedDistance(p) > 1e-6*dr)
+        {
+            continue;
+        }
+        const int64_t ci = std::floor(p.x()/cell);
+        const int64_t cj = std::floor(p.y()/cell);
+        bool clash = false;
+        for (int64_t di = -1; di <= 1 && !clash; ++di)
+        {
+            for (int64_t dj = -1; dj <= 1 && !clash; ++dj)
+            {
+                auto it = grid.find(key(ci + di, cj + dj));
+                if (it == grid.end()) continue;
+                for (const label j : it->second)
+                {
+                    if (mag(pts[j] - p) < 0.5*dr - 1e-9*dr)
+                    {
+                        clash = true;
+                        break;
+                    }
+                }
+            }
+        }
+        if (!clash)
+        {
+            grid[key(ci, cj)].append(i);
+            keep.append(i);
+        }
+    }
+
+    positions = UIndirectList<vector2D>(pts, keep);
+    layer = UIndirectList<label>(lay, keep);
+    patch = UIndirectList<label>(pat, keep);
+}
+
+
+void Foam::SPH::wallMesh::patchCounts(labelList& nPoints, labelList& nSegments) const
+{
+    nPoints.setSize(patchNames_.size(), 0);
+    nSegments.setSize(patchNames_.size(), 0);
+    for (const label p : pointPatch_) ++nPoints[p];
+    for (const label p : segmentPatch_) ++nSegments[p];
+}
+
+
+void Foam::SPH::wallMesh::write(const objectRegistry& db) const
+{
+    const word inst = db.time().constant();
+    auto io = [&](const word& name)
+    {
+        return IOobject(name, inst, wallsLocal, db, IOobject::NO_READ,
+                        IOobject::NO_WRITE, false);
+    };
+
+    IOList<word>(io("patchNames"), patchNames_).write();
+    vector2DIOField(io("points"), points_).write();
+    labelIOField(io("pointPatch"), pointPatch_).write();
+    vector2DIOField(io("pointNormals"), pointNormals_).write();
+    scalarIOField(io("pointAngles"), pointAngles_).write();
+    IOList<labelPair>(io("segments"), segments_).write();
+    vector2DIOField(io("segmentNormals"), segmentNormals_).write();
+    labelIOField(io("segmentPatch"), segmentPatch_).write();
+}
+
+
+// ************************************************************************* //
