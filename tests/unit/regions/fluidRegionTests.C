@@ -98,8 +98,8 @@ TEST(fluidRegion, laterAddRefillsPartOfAHole)
 
 TEST(fluidRegion, orderOfOperationsMatters)
 {
-    // The same two regions as above in the other order: the circle is
-    // subtracted last, so its inside is dry
+    // The circle of the test above, now subtracted after the water: its
+    // inside is dry, and a later add elsewhere does not refill it
     const fluidRegion fluid
     (
         dictFrom
