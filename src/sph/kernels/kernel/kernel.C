@@ -1,0 +1,75 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "kernel.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace SPH
+{
+    defineTypeNameAndDebug(kernel, 0);
+    defineRunTimeSelectionTable(kernel, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::SPH::kernel::readHByDr
+(
+    const dictionary& dict,
+    const scalar dr,
+    const scalar deflt
+)
+{
+    // Checked here, before h is formed from them, so that a bad value is
+    // reported against the dictionary rather than as a NaN much later
+    if (!(dr > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "The particle spacing dr = " << dr
+            << " given to the kernel must be > 0" << exit(FatalIOError);
+    }
+
+    const scalar hByDr = dict.getOrDefault<scalar>("hByDr", deflt);
+
+    // h < dr leaves too few neighbours for any SPH sum to approximate an
+    // integral
+    if (!(hByDr >= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry hByDr = " << hByDr
+            << ": expected a smoothing length over particle spacing >= 1"
+            << exit(FatalIOError);
+    }
+
+    return hByDr;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::kernel::kernel
+(
+    const dictionary& dict,
+    const scalar dr,
+    const scalar defaultHByDr,
+    const scalar qMax
+)
+:
+    dr_(dr),
+    hByDr_(readHByDr(dict, dr, defaultHByDr)),
+    h_(hByDr_*dr_),
+    qMax_(qMax)
+{
+    Info<< "    hByDr " << hByDr_
+        << (dict.found("hByDr") ? "" : " (default)")
+        << ", dr " << dr_ << ", h " << h_
+        << ", support " << support() << " (" << qMax_ << " h)" << endl;
+}
+
+
+// ************************************************************************* //
