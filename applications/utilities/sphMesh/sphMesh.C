@@ -20,7 +20,7 @@ Usage
 
 #include "argList.H"
 #include "Time.H"
-#include "fvMesh.H"
+#include "polyMesh.H"
 #include "particleGenerator.H"
 #include "sphMeshVTK.H"
 #include "sphFoamVersion.H"
@@ -48,17 +48,17 @@ int main(int argc, char *argv[])
 
     Info<< "sphFoam " << SPH::version << nl << endl;
 
-    autoPtr<fvMesh> mesh;
+    autoPtr<polyMesh> mesh;
     if (args.found("fromPolyMesh"))
     {
         Info<< "Reading the 2-D mesh in constant/polyMesh" << nl;
         mesh.reset
         (
-            new fvMesh
+            new polyMesh
             (
                 IOobject
                 (
-                    fvMesh::defaultRegion,
+                    polyMesh::defaultRegion,
                     runTime.timeName(),
                     runTime,
                     IOobject::MUST_READ

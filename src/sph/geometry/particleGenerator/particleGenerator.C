@@ -7,7 +7,7 @@
 #include "fluidRegion.H"
 #include "kernel.H"
 #include "particles.H"
-#include "fvMesh.H"
+#include "polyMesh.H"
 #include "Time.H"
 #include "IOmanip.H"
 
@@ -152,7 +152,7 @@ void Foam::SPH::particleGenerator::seedFluid
 Foam::SPH::particleGenerator::particleGenerator
 (
     const Time& runTime,
-    const fvMesh* mesh
+    const polyMesh* mesh
 )
 :
     runTime_(runTime),

@@ -3,15 +3,17 @@
 \*---------------------------------------------------------------------------*/
 
 #include "polyMeshWalls.H"
-#include "fvMesh.H"
-#include "volFields.H"
+#include "polyMesh.H"
+#include "IFstream.H"
+#include "Time.H"
+#include "SubField.H"
 #include "wallPolyPatch.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::SPH::polyMeshWalls::polyMeshWalls
 (
-    const fvMesh& mesh,
+    const polyMesh& mesh,
     const wordList& patches
 )
 :
@@ -30,7 +32,7 @@ Foam::SPH::polyMeshWalls::polyMeshWalls
         if (mag(p.z() - zMin) > tol && mag(p.z() - bb.max().z()) > tol)
         {
             FatalErrorInFunction
-                << "The mesh in " << mesh.polyMesh::objectPath()
+                << "The mesh in " << mesh.objectPath()
                 << " is not 2-D: point " << p << " is neither on z = " << zMin
                 << " nor on z = " << bb.max().z() << nl
                 << "Make it one cell thick in z (front and back patches empty)."
@@ -108,20 +110,28 @@ Foam::SPH::polyMeshWalls::polyMeshWalls
 
 void Foam::SPH::polyMeshWalls::readFraction(const word& fieldName)
 {
-    volScalarField alpha
+    // The cell values only: no fvMesh (and so no fvSchemes) is needed
+    const IOobject io
     (
-        IOobject
-        (
-            fieldName,
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh_
+        fieldName,
+        mesh_.time().timeName(),
+        mesh_,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
     );
-    fraction_ = alpha.primitiveField();
+    const fileName file(io.objectPath());
+    IFstream is(file);
+    if (!is.good())
+    {
+        FatalErrorInFunction
+            << "Cannot read " << file << ": the field that marks the fluid"
+            << " (run setFields first?)" << exit(FatalError);
+    }
+    IOobject header(io);
+    header.readHeader(is);          // sets ascii or binary from FoamFile
+    const dictionary dict(is);
+    fraction_ = scalarField("internalField", dict, mesh_.nCells());
 }
 
 

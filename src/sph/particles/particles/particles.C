@@ -185,6 +185,11 @@ void Foam::SPH::particles::setInstance(const word& instance)
 
 void Foam::SPH::particles::write() const
 {
+    // OpenFOAM writes a field into the current time (or constant/)
+    if (instance_ != db_.time().constant())
+    {
+        const_cast<particles&>(*this).setInstance(db_.time().timeName());
+    }
     mkDir(path());
     positions_->write();
     for (const word& name : order_)
