@@ -18,7 +18,8 @@ Foam::scalar Foam::SPH::particleGenerator::readSpacing() const
     const scalar dr = dict_.get<scalar>("dr");
     if (dr <= 0)
     {
-        FatalIOErrorInFunction(dict_)
+        // The entry's own stream: the error names its line
+        FatalIOErrorInFunction(dict_.lookup("dr"))
             << "Entry 'dr' (particle spacing) is " << dr
             << "; expected a positive length in metres" << nl
             << exit(FatalIOError);
@@ -34,7 +35,7 @@ Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
     {
         if (n < 1)
         {
-            FatalIOErrorInFunction(dict_)
+            FatalIOErrorInFunction(dict_.lookup("nDummyLayers"))
                 << "Entry 'nDummyLayers' is " << n << "; expected at least 1"
                 << " (the layer on the wall)" << nl << exit(FatalIOError);
         }

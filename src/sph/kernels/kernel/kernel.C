@@ -40,7 +40,8 @@ Foam::scalar Foam::SPH::kernel::readHByDr
     // integral
     if (!(hByDr >= 1))
     {
-        FatalIOErrorInFunction(dict)
+        // The entry's own stream: the error names its line
+        FatalIOErrorInFunction(dict.lookup("hByDr"))
             << "Entry hByDr = " << hByDr
             << ": expected a smoothing length over particle spacing >= 1"
             << exit(FatalIOError);

@@ -29,7 +29,7 @@ Foam::SPH::wallCircle::wallCircle(const word& name, const dictionary& dict)
 {
     if (radius_ <= 0)
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict.lookup("radius"))
             << "Wall patch " << name << ": radius " << radius_
             << " must be positive" << nl << exit(FatalIOError);
     }

@@ -1,0 +1,289 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    sphMesh as a user runs it: on the Zhou dam-break from sphMeshDict, on
+    the blockMesh of OpenFOAM's own interFoam damBreak with -fromPolyMesh,
+    and on bad dictionaries, which must fail naming the file and entry.
+    Counts are exact (a lattice and straight walls); the VTK picture is read
+    back with python3-vtk9.
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "testCase.H"
+#include "particles.H"
+#include "wallMesh.H"
+#include "mathematicalConstants.H"
+
+#include <sys/wait.h>
+
+using namespace Foam;
+using constant::mathematical::pi;
+
+namespace
+{
+    const std::string sphMeshExe = std::string(SPHFOAM_BINARY_DIR) + "/applications/sphMesh";
+    const std::string env = "WM_PROJECT_DIR=/usr/share/openfoam ";
+
+    //- Run a command, returning its exit status; output goes to out
+    int run(const std::string& cmd, std::string& out)
+    {
+        out.clear();
+        FILE* pipe = popen((env + cmd + " 2>&1").c_str(), "r");
+        char buf[4096];
+        while (fgets(buf, sizeof(buf), pipe)) out += buf;
+        const int status = pclose(pipe);
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+
+    //- A copy of a tutorial case in the build folder
+    fileName copyTutorial(const std::string& tutorial, const std::string& name)
+    {
+        const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/name;
+        rmDir(dir);
+        mkDir(dir.path());
+        std::string out;
+        run("cp -r " + std::string(SPHFOAM_SOURCE_DIR) + "/tutorials/" + tutorial + " " + dir, out);
+        return dir;
+    }
+
+    //- A case with the given sphMeshDict body, kernel modifiedGaussian
+    fileName makeMeshCase(const std::string& name, const std::string& sphMeshDict)
+    {
+        const fileName dir = sphTest::makeCase(name);
+        sphTest::writeFile(dir/"system"/"sphSchemes",
+            "FoamFile { version 2.0; format ascii; class dictionary; object sphSchemes; }\n"
+            "kernel modifiedGaussian;\n");
+        sphTest::writeFile(dir/"system"/"sphMeshDict",
+            "FoamFile { version 2.0; format ascii; class dictionary; object sphMeshDict; }\n"
+            + sphMeshDict);
+        return dir;
+    }
+
+    List<vector2D> readPositions(const Time& runTime, const word& set)
+    {
+        SPH::particles parts(runTime, runTime.constant(), "sphMesh"/set);
+        parts.read();
+        return parts.positions();
+    }
+
+    label countAngle(const SPH::wallMesh& w, scalar theta)
+    {
+        label n = 0;
+        for (const scalar a : w.pointAngles()) n += mag(a - theta) < 1e-9;
+        return n;
+    }
+}
+
+
+TEST(sphMeshApplication, helpPrintsOpenFoamUsage)
+{
+    std::string out;
+    EXPECT_EQ(run(sphMeshExe + " -help", out), 0) << out;
+    EXPECT_NE(out.find("Usage: sphMesh [OPTIONS]"), std::string::npos) << out;
+    EXPECT_NE(out.find("-fromPolyMesh"), std::string::npos) << out;
+    EXPECT_NE(out.find("-case"), std::string::npos) << out;
+}
+
+
+TEST(sphMeshApplication, linksTheInstalledLibOpenFOAM)
+{
+    std::string out;
+    run("ldd " + sphMeshExe, out);
+    EXPECT_NE(out.find("libOpenFOAM.so => /lib/libOpenFOAM.so"), std::string::npos)
+        << out;
+}
+
+
+TEST(sphMeshApplication, zhouDamBreakFromSphMeshDict)
+{
+    const fileName dir = copyTutorial("damBreak/zhou", "sphMeshZhou");
+    std::string out;
+    ASSERT_EQ(run(sphMeshExe + " -case " + dir, out), 0) << out;
+    EXPECT_NE(out.find("End"), std::string::npos);
+
+    auto runTime = sphTest::makeTime(dir);
+    const scalar H = 0.6, dr = H/48;
+
+    // The column 2H x H holds exactly 96 x 48 lattice particles, the
+    // lowest-left at (dr/2, dr/2)
+    const List<vector2D> fluid(readPositions(*runTime, "fluid"));
+    EXPECT_EQ(fluid.size(), 96*48);
+    scalar minX = GREAT, minY = GREAT;
+    for (const vector2D& p : fluid) { minX = min(minX, p.x()); minY = min(minY, p.y()); }
+    EXPECT_NEAR(minX, 0.5*dr, 1e-12);
+    EXPECT_NEAR(minY, 0.5*dr, 1e-12);
+
+    // Walls: one open tank, the two bottom corners see a quarter of fluid
+    const SPH::wallMesh walls(*runTime);
+    EXPECT_EQ(walls.patchNames().size(), 1);
+    EXPECT_EQ(countAngle(walls, 0.5*pi), 2);
+    forAll(walls.segments(), s)
+    {
+        EXPECT_NEAR(walls.segmentLength(s), dr, 0.02*dr);
+    }
+
+    // Dummies: 3 layers for the modified Gaussian (support 3 dr), layer 0
+    // on the wall, none on the fluid side
+    SPH::particles dummy(*runTime, runTime->constant(), "sphMesh/dummy");
+    dummy.add<label>("layer");
+    dummy.add<label>("patch");
+    dummy.read();
+    labelList perLayer(3, 0);
+    for (const label k : dummy.field<label>("layer")) ++perLayer[k];
+    EXPECT_EQ(perLayer[0], walls.points().size());
+    EXPECT_GT(perLayer[1], perLayer[0]);
+    EXPECT_GT(perLayer[2], perLayer[1]);
+    for (const vector2D& p : dummy.positions())
+    {
+        EXPECT_LE(walls.signedDistance(p), 1e-9);
+    }
+
+    // The VTK picture reads back in ParaView's reader with every point
+    const std::string py =
+        std::string(SPHFOAM_PYTHON) + " -c \"from vtkmodules.vtkIOXML import vtkXMLPolyDataReader as R;"
+        "r=R();r.SetFileName('" + dir + "/VTK/sphMesh_0.vtp');r.Update();o=r.GetOutput();"
+        "print(o.GetNumberOfPoints(), o.GetPointData().GetArray('type').GetRange())\"";
+    ASSERT_EQ(run(py, out), 0) << out;
+    const label nAll = fluid.size() + walls.points().size() + dummy.size();
+    EXPECT_EQ(out, std::to_string(nAll) + " (0.0, 3.0)\n");
+}
+
+
+TEST(sphMeshApplication, damBreakFromOpenFoamTutorialMesh)
+{
+    // OpenFOAM's own interFoam damBreak: blockMesh, setFields
+    const fileName fv = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"sphMeshDamBreakFv";
+    rmDir(fv);
+    mkDir(fv.path());
+    std::string out;
+    ASSERT_EQ(run("cp -r /usr/share/doc/openfoam-examples/examples/multiphase/interFoam/"
+                  "laminar/damBreak/damBreak " + fv + " && chmod -R u+w " + fv
+                  + " && find " + fv + " -name '*.gz' -exec gunzip -f {} +"
+                  + " && cp " + fv + "/0/alpha.water.orig " + fv + "/0/alpha.water"
+                  + " && blockMesh -case " + fv + " && setFields -case " + fv, out), 0) << out;
+
+    const fileName dir = copyTutorial("damBreak/obstacle/sph", "sphMeshDamBreak");
+    ASSERT_EQ(run("mkdir -p " + dir + "/constant " + dir + "/0 && cp -r " + fv
+                  + "/constant/polyMesh " + dir + "/constant/ && cp " + fv
+                  + "/0/alpha.water " + dir + "/0/", out), 0) << out;
+    ASSERT_EQ(run(sphMeshExe + " -fromPolyMesh -case " + dir, out), 0) << out;
+
+    auto runTime = sphTest::makeTime(dir);
+    const SPH::wallMesh walls(*runTime);
+    EXPECT_EQ(walls.patchNames(), wordList({"leftWall", "rightWall", "lowerWall"}));
+
+    // Tank bottom corners and the obstacle's feet see a quarter of fluid,
+    // the obstacle's top corners three quarters; the tops of the side walls
+    // are free ends
+    EXPECT_EQ(countAngle(walls, 0.5*pi), 4);
+    EXPECT_EQ(countAngle(walls, 1.5*pi), 2);
+
+    // The water: the cells setFields marked (x < 0.1461, y < 0.292)
+    // snapped to the mesh, then the lattice at dr/2 from walls
+    const scalar dr = 0.004;
+    const List<vector2D> fluid(readPositions(*runTime, "fluid"));
+    scalar maxX = 0, maxY = 0;
+    for (const vector2D& p : fluid)
+    {
+        maxX = max(maxX, p.x());
+        maxY = max(maxY, p.y());
+        EXPECT_GE(walls.signedDistance(p), 0.5*dr*(1 - 1e-6));
+    }
+    EXPECT_NEAR(maxX, 0.1461, 2*0.584/23);     // within one FV cell
+    EXPECT_NEAR(maxY, 0.292, 2*0.584/42);
+    EXPECT_NEAR(scalar(fluid.size()), maxX*maxY/(dr*dr), 0.05*fluid.size());
+
+    // The obstacle (x 0.292..0.316, y < 0.048) is filled with dummies
+    SPH::particles dummy(*runTime, runTime->constant(), "sphMesh/dummy");
+    dummy.add<label>("layer");
+    dummy.add<label>("patch");
+    dummy.read();
+    label inObstacle = 0;
+    for (const vector2D& p : dummy.positions())
+    {
+        inObstacle += p.x() > 0.292 && p.x() < 0.316 && p.y() < 0.048 && p.y() > 0;
+        EXPECT_LE(walls.signedDistance(p), 1e-9);
+    }
+    EXPECT_GT(inObstacle, 2*(0.048/dr));
+}
+
+
+TEST(sphMeshApplication, negativeSpacingNamesTheFileLineAndEntry)
+{
+    const fileName dir = makeMeshCase("sphMeshBadDr",
+        "dr -0.01;\n"
+        "fluid { w { type box; min (0 0); max (1 1); } }\n"
+        "walls { t { type box; min (0 0); max (2 2); } }\n");
+    std::string out;
+    EXPECT_EQ(run(sphMeshExe + " -case " + dir, out), 1);
+    EXPECT_NE(out.find("FOAM FATAL IO ERROR"), std::string::npos) << out;
+    EXPECT_NE(out.find("Entry 'dr'"), std::string::npos) << out;
+    EXPECT_NE(out.find("system/sphMeshDict"), std::string::npos) << out;
+    EXPECT_NE(out.find("at line"), std::string::npos) << out;
+}
+
+
+TEST(sphMeshApplication, fluidOutsideTheWallsIsAnError)
+{
+    const fileName dir = makeMeshCase("sphMeshOutside",
+        "dr 0.1;\n"
+        "fluid { w { type box; min (1.5 0); max (3 1); } }\n"
+        "walls { t { type box; min (0 0); max (2 2); } }\n");
+    std::string out;
+    EXPECT_EQ(run(sphMeshExe + " -case " + dir, out), 1);
+    EXPECT_NE(out.find("outside the walls"), std::string::npos) << out;
+    EXPECT_NE(out.find("sphMeshDict.fluid"), std::string::npos) << out;
+}
+
+
+TEST(sphMeshApplication, spacingLargerThanTheDomainIsAnError)
+{
+    const fileName dir = makeMeshCase("sphMeshHugeDr",
+        "dr 5;\n"
+        "fluid { w { type box; min (0 0); max (1 1); } }\n"
+        "walls { t { type box; min (0 0); max (2 2); } }\n");
+    std::string out;
+    EXPECT_EQ(run(sphMeshExe + " -case " + dir, out), 1);
+    EXPECT_NE(out.find("not smaller than the walls' extent"), std::string::npos) << out;
+}
+
+
+TEST(sphMeshApplication, openFluidPolygonIsAnError)
+{
+    const fileName dir = makeMeshCase("sphMeshOpenPolygon",
+        "dr 0.1;\n"
+        "fluid { w { type polygon; points ((0 0) (1 1)); } }\n"
+        "walls { t { type box; min (0 0); max (2 2); } }\n");
+    std::string out;
+    EXPECT_EQ(run(sphMeshExe + " -case " + dir, out), 1);
+    EXPECT_NE(out.find("points"), std::string::npos) << out;
+    EXPECT_NE(out.find("sphMeshDict.fluid.w"), std::string::npos) << out;
+}
+
+
+TEST(sphMeshApplication, unknownWallTypeListsTheValidOnes)
+{
+    const fileName dir = makeMeshCase("sphMeshBadWall",
+        "dr 0.1;\n"
+        "fluid { w { type box; min (0 0); max (1 1); } }\n"
+        "walls { t { type boxx; min (0 0); max (2 2); } }\n");
+    std::string out;
+    EXPECT_EQ(run(sphMeshExe + " -case " + dir, out), 1);
+    EXPECT_NE(out.find("boxx"), std::string::npos) << out;
+    EXPECT_NE(out.find("polyline"), std::string::npos) << out;
+    EXPECT_NE(out.find("sphMeshDict.walls.t"), std::string::npos) << out;
+}
+
+
+TEST(sphMeshApplication, zeroLengthWallSegmentIsAnError)
+{
+    const fileName dir = makeMeshCase("sphMeshZeroSegment",
+        "dr 0.1;\n"
+        "fluid { w { type box; min (0 0); max (1 1); } }\n"
+        "walls { t { type polyline; points ((0 2) (0 0) (0 0) (2 0) (2 2)); } }\n");
+    std::string out;
+    EXPECT_EQ(run(sphMeshExe + " -case " + dir, out), 1);
+    EXPECT_NE(out.find("zero-length segment"), std::string::npos) << out;
+}
