@@ -63,7 +63,7 @@ namespace
 
     List<vector2D> readPositions(const Time& runTime, const word& set)
     {
-        SPH::particles parts(runTime, runTime.constant(), "sphMesh"/set);
+        SPH::particles parts(runTime, runTime.constant(), "sphMesh"/set, false);
         parts.read();
         return parts.positions();
     }
@@ -126,7 +126,7 @@ TEST(sphMeshApplication, zhouDamBreakFromSphMeshDict)
 
     // Dummies: 3 layers for the modified Gaussian (support 3 dr), layer 0
     // on the wall, none on the fluid side
-    SPH::particles dummy(*runTime, runTime->constant(), "sphMesh/dummy");
+    SPH::particles dummy(*runTime, runTime->constant(), "sphMesh/dummy", false);
     dummy.add<label>("layer");
     dummy.add<label>("patch");
     dummy.read();
@@ -196,7 +196,7 @@ TEST(sphMeshApplication, damBreakFromOpenFoamTutorialMesh)
     EXPECT_NEAR(scalar(fluid.size()), maxX*maxY/(dr*dr), 0.05*fluid.size());
 
     // The obstacle (x 0.292..0.316, y < 0.048) is filled with dummies
-    SPH::particles dummy(*runTime, runTime->constant(), "sphMesh/dummy");
+    SPH::particles dummy(*runTime, runTime->constant(), "sphMesh/dummy", false);
     dummy.add<label>("layer");
     dummy.add<label>("patch");
     dummy.read();

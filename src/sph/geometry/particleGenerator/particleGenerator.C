@@ -273,12 +273,12 @@ void Foam::SPH::particleGenerator::write() const
 {
     const word inst = runTime_.constant();
 
-    particles fluid(runTime_, inst, "sphMesh/fluid");
+    particles fluid(runTime_, inst, "sphMesh/fluid", false);
     fluid.resize(fluid_.size());
     fluid.positions() = fluid_;
     fluid.write();
 
-    particles dummy(runTime_, inst, "sphMesh/dummy");
+    particles dummy(runTime_, inst, "sphMesh/dummy", false);
     dummy.add<label>("layer");
     dummy.add<label>("patch");
     dummy.resize(dummy_.size());

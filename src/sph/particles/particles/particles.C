@@ -51,8 +51,8 @@ Foam::IOobject Foam::SPH::particles::io
         local_,
         db_,
         read ? IOobject::MUST_READ : IOobject::NO_READ,
-        write ? IOobject::AUTO_WRITE : IOobject::NO_WRITE,
-        true
+        (write && autoWrite_) ? IOobject::AUTO_WRITE : IOobject::NO_WRITE,
+        autoWrite_
     );
 }
 
@@ -79,14 +79,15 @@ Foam::SPH::particles::particles
     const objectRegistry& db,
     const word& instance,
     const fileName& local,
-    bool writePositions
+    bool autoWrite
 )
 :
     db_(db),
     instance_(instance),
     local_(local),
+    autoWrite_(autoWrite),
     size_(0),
-    positions_(new vector2DIOField(io("positions", false, writePositions)))
+    positions_(new vector2DIOField(io("positions", false, true)))
 {}
 
 
@@ -147,7 +148,8 @@ void Foam::SPH::particles::readFields
     const wordList& labelNames
 )
 {
-    positions_.reset(new vector2DIOField(io("positions", true, positions_->writeOpt() == IOobject::AUTO_WRITE)));
+    positions_.clear();
+    positions_.reset(new vector2DIOField(io("positions", true, true)));
     size_ = positions_->size();
 
     for (const word& name : scalarNames) { readField<scalar>(name); }

@@ -52,6 +52,8 @@ Foam::Field<Type>& Foam::SPH::particles::add
 template<class Type>
 void Foam::SPH::particles::readField(const word& name)
 {
+    // The old field (if any) leaves the registry before its successor enters
+    table<Type>().erase(name);
     autoPtr<IOField<Type>> fld(new IOField<Type>(io(name, true, true)));
     if (fld->size() != size_)
     {
@@ -61,15 +63,11 @@ void Foam::SPH::particles::readField(const word& name)
             << " holds " << size_ << " particles" << nl
             << exit(FatalError);
     }
-    if (table<Type>().found(name))
+    if (!order_.found(name))
     {
-        table<Type>().set(name, fld.ptr());
-    }
-    else
-    {
-        table<Type>().set(name, fld.ptr());
         order_.append(name);
     }
+    table<Type>().set(name, fld.ptr());
     restart_.insert(name);
 }
 

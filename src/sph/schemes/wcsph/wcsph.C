@@ -1,0 +1,647 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "wcsph.H"
+#include "Time.H"
+#include "dimensionedScalar.H"
+#include "uniformDimensionedFields.H"
+#include "OSspecific.H"
+#include "vtkCaseWriter.H"
+#include "vtkParticleFile.H"
+#include "vtkWallFile.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::SPH::wcsph::boundaryMethod>
+Foam::SPH::wcsph::boundaryMethodNames
+({
+    { boundaryMethod::dummyRepulsive, "dummyRepulsive" },
+});
+
+const Foam::Enum<Foam::SPH::wcsph::viscosityModel>
+Foam::SPH::wcsph::viscosityModelNames
+({
+    { viscosityModel::none, "none" },
+    { viscosityModel::Morris, "Morris" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::wcsph::readPhysics()
+{
+    IOdictionary transport
+    (
+        IOobject
+        (
+            "transportProperties", runTime_.constant(), runTime_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    rho0_ = dimensionedScalar("rho", dimDensity, transport).value();
+    nu_ = dimensionedScalar("nu", dimViscosity, transport).value();
+    if (rho0_ <= 0 || nu_ < 0)
+    {
+        FatalIOErrorInFunction(transport)
+            << "Expected rho > 0 and nu >= 0, found rho " << rho0_
+            << " and nu " << nu_ << exit(FatalIOError);
+    }
+
+    const uniformDimensionedVectorField g
+    (
+        IOobject
+        (
+            "g", runTime_.constant(), runTime_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    if (g.dimensions() != dimAcceleration)
+    {
+        FatalErrorInFunction
+            << "constant/g has dimensions " << g.dimensions()
+            << ", expected " << dimAcceleration << exit(FatalError);
+    }
+    g_ = vector2D(g.value().x(), g.value().y());
+}
+
+
+void Foam::SPH::wcsph::readSchemes()
+{
+    boundaryMethodNames.getOrDefault
+    (
+        "boundaryMethod", schemes_, boundaryMethod::dummyRepulsive
+    );
+
+    gamma_ = schemes_.getOrDefault<scalar>("gamma", 7);
+    if (schemes_.found("c0"))
+    {
+        c0_ = schemes_.get<scalar>("c0");
+    }
+    else if (schemes_.found("Umax"))
+    {
+        c0_ = schemes_.getOrDefault<scalar>("c0ByUmax", 10)*schemes_.get<scalar>("Umax");
+    }
+    else
+    {
+        FatalIOErrorInFunction(schemes_)
+            << "Missing entry 'c0' (the numerical speed of sound, m/s), or"
+            << " 'Umax' (the expected largest speed; c0 = c0ByUmax Umax with"
+            << " c0ByUmax 10 by default)" << nl << exit(FatalIOError);
+    }
+    if (!(c0_ > 0) || !(gamma_ >= 1))
+    {
+        FatalIOErrorInFunction(schemes_)
+            << "Expected c0 > 0 and gamma >= 1, found c0 " << c0_
+            << " and gamma " << gamma_ << exit(FatalIOError);
+    }
+    b0_ = rho0_*c0_*c0_/gamma_;
+
+    // 004_... eq. (11): K = 0.01 b0 gamma/rho0 (= 0.01 c0^2)
+    ks_ = schemes_.getOrDefault<scalar>("ks", 1.5);
+    K_ = 0.01*b0_*gamma_/rho0_;
+    if (!(ks_ > 0) || ks_*kernel_->h() > kernel_->support() + SMALL)
+    {
+        FatalIOErrorInFunction(schemes_)
+            << "Entry ks " << ks_ << ": expected 0 < ks <= "
+            << kernel_->support()/kernel_->h()
+            << " (the repulsion must lie within the kernel support)"
+            << exit(FatalIOError);
+    }
+
+    densityDiffusion_ = schemes_.getOrDefault<bool>("densityDiffusion", true);
+    viscosity_ = viscosityModelNames.getOrDefault
+    (
+        "viscosity", schemes_, viscosityModel::Morris
+    );
+    if (nu_ == 0)
+    {
+        viscosity_ = viscosityModel::none;
+    }
+    minDeltaTFraction_ = schemes_.getOrDefault<scalar>("minDeltaTFraction", 1e-3);
+}
+
+
+void Foam::SPH::wcsph::initialiseFromSphMesh()
+{
+    particles fluid(runTime_, runTime_.constant(), "sphMesh/fluid", false);
+    fluid.read();
+    particles dummy(runTime_, runTime_.constant(), "sphMesh/dummy", false);
+    dummy.add<label>("layer");
+    dummy.add<label>("patch");
+    dummy.read();
+
+    nFluid_ = fluid.size();
+    parts_.resize(nFluid_ + dummy.size());
+    vector2DField& x = parts_.positions();
+    labelField& type = parts_.field<label>("type");
+    labelField& patch = parts_.field<label>("patch");
+    labelField& id = parts_.field<label>("id");
+
+    forAll(fluid.positions(), i)
+    {
+        x[i] = fluid.positions()[i];
+        type[i] = label(particleKind::fluid);
+        patch[i] = -1;
+    }
+    forAll(dummy.positions(), d)
+    {
+        const label i = nFluid_ + d;
+        x[i] = dummy.positions()[d];
+        type[i] = label
+        (
+            dummy.field<label>("layer")[d] == 0
+          ? particleKind::interfacial
+          : particleKind::dummy
+        );
+        patch[i] = dummy.field<label>("patch")[d];
+    }
+    forAll(id, i)
+    {
+        id[i] = i;
+    }
+    setInitialFields();
+}
+
+
+void Foam::SPH::wcsph::setInitialFields()
+{
+    const word t0(runTime_.timeName());
+    auto initialDict = [&](const word& name)
+    {
+        return IOdictionary
+        (
+            IOobject
+            (
+                name, t0, runTime_,
+                IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+            )
+        );
+    };
+
+    vector2DField& U = parts_.field<vector2D>("U");
+    scalarField& p = parts_.field<scalar>("p");
+    scalarField& rho = parts_.field<scalar>("rho");
+
+    const IOdictionary Udict(initialDict("U"));
+    vector2D U0(vector2D::zero);
+    if (Udict.found("internalField"))
+    {
+        ITstream& is = Udict.lookup("internalField");
+        const word kind(is);
+        if (kind != "uniform")
+        {
+            FatalIOErrorInFunction(is)
+                << "Expected 'internalField uniform (Ux Uy Uz);'"
+                << exit(FatalIOError);
+        }
+        const vector v(is);
+        U0 = vector2D(v.x(), v.y());
+        Info<< "Initial velocity " << U0 << " from " << Udict.objectPath() << nl;
+    }
+    else
+    {
+        Info<< "No " << t0/"U" << ": the fluid starts at rest" << nl;
+    }
+
+    const IOdictionary pDict(initialDict("p"));
+    const scalar gMag = mag(g_);
+    for (label i = 0; i < nFluid_; ++i)
+    {
+        U[i] = U0;
+        p[i] = 0;
+    }
+    if (pDict.found("internalField"))
+    {
+        ITstream& is = pDict.lookup("internalField");
+        const word kind(is);
+        if (kind == "uniform")
+        {
+            const scalar pu = readScalar(is);
+            for (label i = 0; i < nFluid_; ++i) p[i] = pu;
+            Info<< "Initial pressure " << pu << " from " << pDict.objectPath() << nl;
+        }
+        else if (kind == "hydrostatic")
+        {
+            if (mag(g_.x()) > SMALL*gMag)
+            {
+                FatalIOErrorInFunction(is)
+                    << "internalField hydrostatic needs gravity along -y"
+                    << exit(FatalIOError);
+            }
+            // The top of each lattice column of water is its free surface
+            HashTable<scalar, label, Hash<label>> top;
+            const vector2DField& x = parts_.positions();
+            for (label i = 0; i < nFluid_; ++i)
+            {
+                const label col = std::lround(x[i].x()/dr_);
+                auto it = top.find(col);
+                if (!it.found()) top.set(col, x[i].y());
+                else *it = max(*it, x[i].y());
+            }
+            for (label i = 0; i < nFluid_; ++i)
+            {
+                const scalar surface = top[std::lround(x[i].x()/dr_)] + 0.5*dr_;
+                p[i] = rho0_*gMag*(surface - x[i].y());
+            }
+            Info<< "Initial pressure hydrostatic (rho0 |g| depth below the top"
+                << " of each water column) from " << pDict.objectPath() << nl;
+        }
+        else
+        {
+            FatalIOErrorInFunction(is)
+                << "Expected 'internalField uniform <p>;' or"
+                << " 'internalField hydrostatic;', found " << kind
+                << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        Info<< "No " << t0/"p" << ": the fluid starts at p = 0" << nl;
+    }
+    for (label i = 0; i < nFluid_; ++i)
+    {
+        rho[i] = density(p[i]);
+    }
+    for (label i = nFluid_; i < parts_.size(); ++i)
+    {
+        U[i] = vector2D::zero;
+        rho[i] = rho0_;
+        p[i] = 0;
+    }
+}
+
+
+void Foam::SPH::wcsph::initialise()
+{
+    parts_.add<vector2D>("U");
+    parts_.add<scalar>("rho");
+    parts_.add<scalar>("p");
+    parts_.add<label>("id");
+    parts_.add<label>("type");
+    parts_.add<label>("patch");
+
+    if (isFile(parts_.path()/"positions"))
+    {
+        Info<< "Restarting from " << parts_.path() << nl;
+        parts_.read();
+        nFluid_ = 0;
+        const labelField& type = parts_.field<label>("type");
+        while (nFluid_ < type.size() && type[nFluid_] == label(particleKind::fluid))
+        {
+            ++nFluid_;
+        }
+    }
+    else
+    {
+        Info<< "Starting from the particles of constant/sphMesh" << nl;
+        initialiseFromSphMesh();
+    }
+
+    const label n = parts_.size();
+    dUdt_.setSize(nFluid_);
+    drhodt_.setSize(nFluid_);
+    x0_.setSize(nFluid_);
+    U0_.setSize(nFluid_);
+    sumX_.setSize(nFluid_);
+    sumU_.setSize(nFluid_);
+    rhoStart_.setSize(nFluid_);
+    sumRho_.setSize(nFluid_);
+
+    Info<< "Particles: " << nFluid_ << " fluid, " << n - nFluid_ << " dummy"
+        << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::wcsph::wcsph(Time& runTime)
+:
+    runTime_(runTime),
+    schemes_
+    (
+        IOobject
+        (
+            "sphSchemes", runTime.system(), runTime,
+            IOobject::MUST_READ_IF_MODIFIED, IOobject::NO_WRITE, false
+        )
+    ),
+    rho0_(0), nu_(0), g_(vector2D::zero),
+    c0_(0), gamma_(7), b0_(0), ks_(1.5), K_(0),
+    densityDiffusion_(true), viscosity_(viscosityModel::Morris),
+    minDeltaTFraction_(1e-3),
+    walls_(new wallMesh(runTime)),
+    parts_(runTime, runTime.timeName()),
+    nFluid_(0),
+    dr_(0),
+    nbrs_(true),
+    ratesCurrent_(false),
+    deltaT0_(-1),
+    maxSpeed_(0), maxAccel_(0), maxSoundSpeed_(0)
+{
+    readPhysics();
+
+    // The spacing sphMesh used: its wall segments are close to dr
+    {
+        IOdictionary meshDict
+        (
+            IOobject
+            (
+                "sphMeshDict", runTime.system(), runTime,
+                IOobject::MUST_READ, IOobject::NO_WRITE, false
+            )
+        );
+        dr_ = meshDict.get<scalar>("dr");
+    }
+    kernel_ = kernel::New(schemes_, dr_);
+    readSchemes();
+    initialise();
+
+    // The domain: the walls' box and a margin for splashes
+    walls_->bounds(boxMin_, boxMax_);
+    const vector2D margin = 0.25*(boxMax_ - boxMin_) + vector2D(1, 1)*kernel_->support();
+    boxMin_ -= margin;
+    boxMax_ += margin;
+
+    cloud_.reset
+    (
+        new sphCloud
+        (
+            runTime, parts_, *kernel_, *walls_, nFluid_, dr_, rho0_, g_,
+            boxMin_, boxMax_
+        )
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::wcsph::printStages() const
+{
+    Info<< "WCSPH (004_f29223b75201dc88.txt), stages of each Runge-Kutta stage:"
+        << nl
+        << "    neighbours         cell-linked list, rebuilt at every stage" << nl
+        << "    wall particles     dummy pressure eq. (10), density from eq. (4)"
+        << nl
+        << "    equation of state  Tait eq. (4): c0 " << c0_ << ", gamma "
+        << gamma_ << ", b0 " << b0_ << nl
+        << "    continuity         eq. (6)"
+        << (densityDiffusion_ ? " with Rusanov density diffusion (7)" : "")
+        << nl
+        << "    momentum           Hu-Adams pressure gradient eq. (8), gravity "
+        << g_ << nl
+        << "    repulsion          eqs. (11)-(12): ks " << ks_ << ", K " << K_
+        << nl;
+    if (viscosity_ == viscosityModel::Morris)
+    {
+        Info<< "    viscosity          Morris, nu " << nu_ << nl;
+    }
+    else
+    {
+        Info<< "    viscosity          none (nu = " << nu_ << ")" << nl;
+    }
+    Info<< "    time integration   classical Runge-Kutta, eq. (14)" << nl
+        << "    time step          eq. (15), C_n = maxCo "
+        << runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2)
+        << (runTime_.controlDict().getOrDefault<bool>("adjustTimeStep", false)
+            ? "" : " (adjustTimeStep off: deltaT fixed)")
+        << nl << endl;
+}
+
+
+Foam::scalar Foam::SPH::wcsph::stableDeltaT()
+{
+    if (!ratesCurrent_)
+    {
+        computeRates();
+    }
+    const scalar h = kernel_->h();
+    const scalar Cn = runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2);
+
+    // 004_... eq. (15), and the viscous and force limits of 000_... eq. (49)
+    scalar dt = Cn*h/max(maxSoundSpeed_, maxSpeed_);
+    if (nu_ > 0)
+    {
+        dt = min(dt, 0.125*h*h/nu_);
+    }
+    if (maxAccel_ > 0)
+    {
+        dt = min(dt, 0.25*std::sqrt(h/maxAccel_));
+    }
+    dt = min(dt, runTime_.controlDict().getOrDefault<scalar>("maxDeltaT", GREAT));
+
+    if (deltaT0_ < 0)
+    {
+        deltaT0_ = dt;
+    }
+    return dt;
+}
+
+
+void Foam::SPH::wcsph::evolve()
+{
+    const scalar dt = runTime_.deltaTValue();
+    if (!ratesCurrent_)
+    {
+        computeRates();
+    }
+    if (deltaT0_ < 0)
+    {
+        deltaT0_ = dt;
+    }
+    if (dt < minDeltaTFraction_*deltaT0_)
+    {
+        fail
+        (
+            "The time step collapsed to " + Foam::name(dt) + " s, below "
+          + Foam::name(minDeltaTFraction_) + " of the first one ("
+          + Foam::name(deltaT0_) + " s): the flow is too violent for this"
+          " resolution and sound speed",
+            -1, runTime_.value()
+        );
+    }
+
+    vector2D* x = parts_.positions().data();
+    vector2D* U = parts_.field<vector2D>("U").data();
+    scalar* rho = parts_.field<scalar>("rho").data();
+
+    const label nF = nFluid_;
+    for (label i = 0; i < nF; ++i)
+    {
+        x0_[i] = x[i];
+        U0_[i] = U[i];
+        rhoStart_[i] = rho[i];
+        sumX_[i] = vector2D::zero;
+        sumU_[i] = vector2D::zero;
+        sumRho_[i] = 0;
+    }
+
+    // Classical Runge-Kutta, 004_... eq. (14): alpha = 1/2, 1/2, 1, 1/6
+    static const scalar stageFraction[3] = {0.5, 0.5, 1.0};
+    static const scalar weight[4] = {1.0/6, 1.0/3, 1.0/3, 1.0/6};
+
+    for (label stage = 0; stage < 4; ++stage)
+    {
+        if (stage > 0)
+        {
+            computeRates();
+        }
+        const scalar w = weight[stage];
+        const scalar a = stage < 3 ? stageFraction[stage]*dt : 0;
+
+        #pragma omp parallel for schedule(static)
+        for (label i = 0; i < nF; ++i)
+        {
+            sumX_[i] += w*U[i];
+            sumU_[i] += w*dUdt_[i];
+            sumRho_[i] += w*drhodt_[i];
+            if (stage < 3)
+            {
+                x[i] = x0_[i] + a*U[i];
+                U[i] = U0_[i] + a*dUdt_[i];
+                rho[i] = rhoStart_[i] + a*drhodt_[i];
+            }
+            else
+            {
+                x[i] = x0_[i] + dt*sumX_[i];
+                U[i] = U0_[i] + dt*sumU_[i];
+                rho[i] = rhoStart_[i] + dt*sumRho_[i];
+            }
+        }
+    }
+    ratesCurrent_ = false;
+
+    // Pressure of the new state, and the neighbour search function
+    // objects use
+    scalar* p = parts_.field<scalar>("p").data();
+    for (label i = 0; i < nF; ++i)
+    {
+        p[i] = pressure(rho[i]);
+    }
+    cloud_->updateCells();
+
+    word what;
+    const label bad = findBadParticle(what);
+    if (bad >= 0)
+    {
+        fail(what, bad, runTime_.value());
+    }
+}
+
+
+Foam::label Foam::SPH::wcsph::findBadParticle(word& what) const
+{
+    const vector2D* x = parts_.positions().cdata();
+    const vector2D* U = parts_.field<vector2D>("U").cdata();
+    const scalar* rho = parts_.field<scalar>("rho").cdata();
+
+    label bad = -1;
+    for (label i = 0; i < nFluid_ && bad < 0; ++i)
+    {
+        const bool finite =
+            std::isfinite(x[i].x()) && std::isfinite(x[i].y())
+         && std::isfinite(U[i].x()) && std::isfinite(U[i].y())
+         && std::isfinite(rho[i]);
+        if (!finite)
+        {
+            what = "NaN or Inf in the position, velocity or density of";
+            bad = i;
+        }
+        else if
+        (
+            x[i].x() < boxMin_.x() || x[i].y() < boxMin_.y()
+         || x[i].x() > boxMax_.x() || x[i].y() > boxMax_.y()
+        )
+        {
+            what = "Left the domain (the walls' box with a margin):";
+            bad = i;
+        }
+    }
+    return bad;
+}
+
+
+void Foam::SPH::wcsph::fail(const string& what, label i, scalar tFailed)
+{
+    // The state at the start of this step was good: put it back and write it
+    const label nF = nFluid_;
+    vector2DField& x = parts_.positions();
+    vector2DField& U = parts_.field<vector2D>("U");
+    scalarField& rho = parts_.field<scalar>("rho");
+    scalarField& p = parts_.field<scalar>("p");
+
+    string where;
+    if (i >= 0)
+    {
+        where = " particle id " + Foam::name(parts_.field<label>("id")[i])
+          + " at (" + Foam::name(x[i].x()) + " " + Foam::name(x[i].y()) + ")"
+          + (i < nF ? "" : " (a wall particle)");
+    }
+    const bool stepTaken = x0_.size() == nF && deltaT0_ > 0;
+    if (stepTaken)
+    {
+        for (label j = 0; j < nF; ++j)
+        {
+            x[j] = x0_[j];
+            U[j] = U0_[j];
+            rho[j] = rhoStart_[j];
+            p[j] = pressure(rho[j]);
+        }
+        runTime_.setTime(runTime_.value() - runTime_.deltaTValue(), runTime_.timeIndex() - 1);
+    }
+    runTime_.writeNow();
+    writeVTK();
+
+    FatalErrorInFunction
+        << what.c_str() << where.c_str() << nl
+        << "    at time " << tFailed << " s (time step " << runTime_.timeIndex() + 1
+        << ", deltaT " << runTime_.deltaTValue() << " s)" << nl
+        << "The last good state, time " << runTime_.timeName()
+        << ", is written in " << runTime_.timePath() << nl
+        << exit(FatalError);
+}
+
+
+void Foam::SPH::wcsph::writeVTK() const
+{
+    const vector2DField& x = parts_.positions();
+    if (!vtk_)
+    {
+        vtk_.reset
+        (
+            new vtkCaseWriter
+            (
+                runTime_.path(), runTime_.caseName().name(),
+                vtkCaseWriter::staticWalls
+            )
+        );
+    }
+    vtkCaseWriter& vtk = *vtk_;
+
+    vtkParticleFile particleFile(x);
+    particleFile.addPointField("U", parts_.field<vector2D>("U"));
+    particleFile.addPointField("p", parts_.field<scalar>("p"));
+    particleFile.addPointField("rho", parts_.field<scalar>("rho"));
+    particleFile.addPointField("type", parts_.field<label>("type"));
+    particleFile.addPointField("id", parts_.field<label>("id"));
+    vtk.writeParticles(particleFile, runTime_.timeIndex(), runTime_.value());
+
+    if (vtk.wallsDue())
+    {
+        vtkWallFile wallFile(walls_->points(), walls_->segments());
+        wallFile.addCellField("normal", walls_->segmentNormals());
+        wallFile.addCellField("patch", walls_->segmentPatch());
+        vtk.writeWalls(wallFile, runTime_.timeIndex(), runTime_.value());
+    }
+}
+
+
+Foam::scalar Foam::SPH::wcsph::totalMass() const
+{
+    return nFluid_*cloud_->mass();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,173 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    The interactions of one Runge-Kutta stage, as templates over the
+    concrete kernel (kernelDispatch) so the per-pair work is inlined.
+
+\*---------------------------------------------------------------------------*/
+
+#include "wcsph.H"
+#include "kernelDispatch.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Kernel>
+void Foam::SPH::wcsph::dummyPressure(const Kernel& W)
+{
+    // 004_... eq. (10): a Shepard average over the fluid neighbours of the
+    // fluid pressure plus the hydrostatic step to the dummy particle
+    const vector2D* x = parts_.positions().cdata();
+    const scalar* rho = parts_.field<scalar>("rho").cdata();
+    scalar* p = parts_.field<scalar>("p").data();
+    scalar* rhoW = parts_.field<scalar>("rho").data();
+
+    const label* off = nbrs_.offsets().cdata();
+    const label* nbr = nbrs_.indices().cdata();
+    const scalar* r = nbrs_.r().cdata();
+    const label nF = nFluid_;
+    const label n = parts_.size();
+    const scalar m = cloud_->mass();
+
+    #pragma omp parallel for schedule(static)
+    for (label s = nF; s < n; ++s)
+    {
+        scalar sumPW = 0, sumW = 0;
+        for (label k = off[s]; k < off[s + 1]; ++k)
+        {
+            const label a = nbr[k];
+            if (a >= nF) continue;
+            const scalar VW = m/rho[a]*W.W(r[k]);
+            sumPW += (p[a] + rho[a]*(g_ & (x[s] - x[a])))*VW;
+            sumW += VW;
+        }
+        p[s] = sumW > 0 ? sumPW/sumW : 0;
+        rhoW[s] = density(p[s]);
+    }
+}
+
+
+template<class Kernel>
+void Foam::SPH::wcsph::fluidRates(const Kernel& W)
+{
+    const vector2D* U = parts_.field<vector2D>("U").cdata();
+    const scalar* rho = parts_.field<scalar>("rho").cdata();
+    const scalar* p = parts_.field<scalar>("p").cdata();
+    const label* type = parts_.field<label>("type").cdata();
+
+    const label* off = nbrs_.offsets().cdata();
+    const label* nbr = nbrs_.indices().cdata();
+    const vector2D* rij = nbrs_.rij().cdata();
+    const scalar* r = nbrs_.r().cdata();
+
+    const label nF = nFluid_;
+    const scalar m = cloud_->mass();
+    const scalar h = W.h();
+    const scalar eta2 = 0.01*h*h;
+    const scalar cFactor = std::sqrt(b0_*gamma_/rho0_);
+    const scalar cExponent = 0.5*(gamma_ - 1);
+    const bool diffuse = densityDiffusion_;
+    const bool viscous = viscosity_ == viscosityModel::Morris;
+    const scalar nu = nu_;
+    const scalar rhoRef = rho0_;
+    const label interfacial = label(particleKind::interfacial);
+
+    // Repulsion, 004_... eqs. (11)-(12)
+    const scalar ksh = ks_*h;
+    const scalar eks = std::exp(-3*ks_*ks_);
+    const scalar K = K_;
+
+    // Sound speed of every particle, eq. (7), once rather than per pair
+    const label n = parts_.size();
+    soundSpeed_.setSize(n);
+    scalar* c = soundSpeed_.data();
+    #pragma omp parallel for schedule(static)
+    for (label j = 0; j < n; ++j)
+    {
+        c[j] = cFactor*std::pow(rho[j]/rhoRef, cExponent);
+    }
+
+    scalar maxU2 = 0, maxA2 = 0, maxC = 0;
+
+    #pragma omp parallel for schedule(static) reduction(max: maxU2, maxA2, maxC)
+    for (label i = 0; i < nF; ++i)
+    {
+        const scalar rhoI = rho[i];
+        const scalar Vi = m/rhoI;
+        const scalar cI = c[i];
+
+        scalar drho = 0;
+        vector2D dU(vector2D::zero);
+
+        for (label k = off[i]; k < off[i + 1]; ++k)
+        {
+            const label j = nbr[k];
+            const scalar rhoJ = rho[j];
+            const scalar Vj = m/rhoJ;
+            const scalar dW = W.dWdr(r[k]);
+            const vector2D gradW = (r[k] > 0 ? dW/r[k] : 0)*rij[k];
+            const vector2D Uij = U[i] - U[j];
+
+            // Continuity, eq. (6), with Rusanov diffusion (n_ij.gradW = -dW)
+            drho += rhoI*Vj*(Uij & gradW);
+            if (diffuse)
+            {
+                drho -= max(cI, c[j])*Vj*(rhoJ - rhoI)*dW;
+            }
+
+            // Hu-Adams pressure gradient, eq. (8)
+            const scalar pij = (rhoJ*p[i] + rhoI*p[j])/(rhoI + rhoJ);
+            dU -= (Vi*Vi + Vj*Vj)*pij/m*gradW;
+
+            // Laminar viscosity (Morris et al.): wall particles are at rest
+            if (viscous)
+            {
+                dU += m*nu*(rhoI + rhoJ)/(rhoI*rhoJ)*(dW*r[k]/(r[k]*r[k] + eta2))*Uij;
+            }
+
+            // Soft repulsion from the dummies on the wall, eqs. (11)-(12)
+            if (type[j] == interfacial && r[k] < ksh && r[k] > 0)
+            {
+                const scalar q = r[k]/h;
+                const scalar psi = (std::exp(-3*q*q) - eks)/(1 - eks);
+                dU += (K*psi/(r[k]*r[k]))*rij[k];
+            }
+        }
+        dU += g_;
+
+        drhodt_[i] = drho;
+        dUdt_[i] = dU;
+        maxU2 = max(maxU2, magSqr(U[i]));
+        maxA2 = max(maxA2, magSqr(dU));
+        maxC = max(maxC, cI);
+    }
+
+    maxSpeed_ = std::sqrt(maxU2);
+    maxAccel_ = std::sqrt(maxA2);
+    maxSoundSpeed_ = maxC;
+}
+
+
+void Foam::SPH::wcsph::computeRates()
+{
+    cloud_->updateCells();
+    nbrs_.build(cloud_->cells(), parts_.positions(), kernel_->support(), true);
+
+    // Fluid pressure from density, eq. (4)
+    scalar* p = parts_.field<scalar>("p").data();
+    const scalar* rho = parts_.field<scalar>("rho").cdata();
+    for (label i = 0; i < nFluid_; ++i)
+    {
+        p[i] = pressure(rho[i]);
+    }
+
+    dispatch(*kernel_, [&](const auto& W)
+    {
+        dummyPressure(W);
+        fluidRates(W);
+    });
+    ratesCurrent_ = true;
+}
+
+
+// ************************************************************************* //
