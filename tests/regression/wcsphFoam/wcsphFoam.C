@@ -1,0 +1,185 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    wcsphFoam on short real cases: still water in a tank (the bottom
+    pressure and the particles at rest), an exact restart, a run that goes
+    wrong (stopped with the last good state written), and bad dictionaries.
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "testCase.H"
+#include "particles.H"
+#include "wallMesh.H"
+
+#include <sys/wait.h>
+
+using namespace Foam;
+
+namespace
+{
+    const std::string bin = std::string(SPHFOAM_BINARY_DIR) + "/applications/";
+    const std::string env = "WM_PROJECT_DIR=/usr/share/openfoam ";
+
+    int run(const std::string& cmd, std::string& out)
+    {
+        out.clear();
+        FILE* pipe = popen((env + cmd + " 2>&1").c_str(), "r");
+        char buf[4096];
+        while (fgets(buf, sizeof(buf), pipe)) out += buf;
+        const int status = pclose(pipe);
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+
+    //- The hydrostatic tank tutorial copied, with entries changed by sed
+    fileName tankCase(const std::string& name, scalar dr, const std::string& endTime)
+    {
+        const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/name;
+        rmDir(dir);
+        mkDir(dir.path());
+        std::string out;
+        run("cp -r " + std::string(SPHFOAM_SOURCE_DIR) + "/tutorials/wcsph/hydrostaticTank " + dir
+            + " && sed -i 's/^dr .*/dr " + std::to_string(dr) + ";/' " + dir + "/system/sphMeshDict"
+            + " && sed -i 's/^endTime .*/endTime " + endTime + ";/' " + dir + "/system/controlDict"
+            + " && echo 'logInterval 1000;' >> " + dir + "/system/controlDict", out);
+        EXPECT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
+        return dir;
+    }
+
+    void setEntry(const fileName& file, const std::string& key, const std::string& value)
+    {
+        std::string out;
+        run("sed -i 's/^" + key + " .*/" + key + " " + value + ";/' " + file, out);
+    }
+
+    //- Particle fields of a time directory
+    struct state
+    {
+        List<vector2D> x, U;
+        scalarList p;
+        labelList type;
+    };
+
+    state readState(const fileName& dir, const word& time)
+    {
+        auto runTime = sphTest::makeTime(dir);
+        SPH::particles parts(*runTime, time, SPH::particles::defaultLocal, false);
+        parts.add<vector2D>("U");
+        parts.add<scalar>("p");
+        parts.add<label>("type");
+        parts.read();
+        return state{parts.positions(), parts.field<vector2D>("U"), parts.field<scalar>("p"), parts.field<label>("type")};
+    }
+}
+
+
+TEST(wcsphFoam, hydrostaticTankStaysAtRestForTwoSeconds)
+{
+    // H = 0.5 m, 20 particles deep; 2 s is about 9 periods of the tank's
+    // gravest sloshing mode
+    const scalar H = 0.5, dr = 0.025, rho = 1000, g = 9.81;
+    const fileName dir = tankCase("wcsphTank", dr, "2");
+    setEntry(dir/"system"/"controlDict", "writeInterval", "1");
+    std::string out;
+    ASSERT_EQ(run(bin + "wcsphFoam -case " + dir, out), 0) << out.substr(out.size() - 2000);
+
+    auto runTime = sphTest::makeTime(dir);
+    const SPH::wallMesh walls(*runTime);
+    for (const word t : {"1", "2"})
+    {
+        const state s = readState(dir, t);
+        scalar maxSpeed = 0, pBottom = 0;
+        label nBottom = 0;
+        forAll(s.x, i)
+        {
+            if (s.type[i] != 0) continue;
+            // No fluid particle is behind a wall or on it
+            EXPECT_GT(walls.signedDistance(s.x[i]), 0.1*dr) << "particle " << i;
+            maxSpeed = max(maxSpeed, mag(s.U[i]));
+            // The lowest layer, away from the side walls: p + rho g y is
+            // the bottom pressure
+            if (s.x[i].y() < dr && s.x[i].x() > 0.25 && s.x[i].x() < 0.75)
+            {
+                pBottom += s.p[i] + rho*g*s.x[i].y();
+                ++nBottom;
+            }
+        }
+        ASSERT_GT(nBottom, 0);
+        pBottom /= nBottom;
+        // The acceptance figures of the solver: bottom pressure within 3 %
+        // of rho g H, speeds below 1 % of sqrt(g H)
+        EXPECT_NEAR(pBottom/(rho*g*H), 1, 0.03) << "t = " << t;
+        EXPECT_LT(maxSpeed, 0.01*std::sqrt(g*H)) << "t = " << t;
+    }
+}
+
+
+TEST(wcsphFoam, restartIsExactToTheBit)
+{
+    const fileName once = tankCase("wcsphRestartOnce", 0.05, "0.02");
+    setEntry(once/"system"/"controlDict", "writeInterval", "0.01");
+    std::string out;
+    ASSERT_EQ(run("cp -r " + once + " " + once + "Twice", out), 0);
+    const fileName twice = once + "Twice";
+
+    ASSERT_EQ(run(bin + "wcsphFoam -case " + once, out), 0) << out;
+
+    setEntry(twice/"system"/"controlDict", "endTime", "0.01");
+    ASSERT_EQ(run(bin + "wcsphFoam -case " + twice, out), 0) << out;
+    setEntry(twice/"system"/"controlDict", "endTime", "0.02");
+    setEntry(twice/"system"/"controlDict", "startFrom", "latestTime");
+    ASSERT_EQ(run(bin + "wcsphFoam -case " + twice, out), 0) << out;
+    EXPECT_NE(out.find("Restarting from"), std::string::npos) << out;
+
+    for (const word f : {"positions", "U", "rho", "p"})
+    {
+        EXPECT_EQ(run("cmp " + once/"0.02/lagrangian/sph"/f + " " + twice/"0.02/lagrangian/sph"/f, out), 0)
+            << f << ": " << out;
+    }
+}
+
+
+TEST(wcsphFoam, particleLeavingTheDomainStopsWithTheLastGoodStateWritten)
+{
+    const fileName dir = tankCase("wcsphEscape", 0.05, "0.1");
+    std::string out;
+    run("sed -i 's/^internalField .*/internalField uniform (0 -300 0);/' " + dir/"0"/"U", out);
+
+    EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 1);
+    EXPECT_NE(out.find("Left the domain"), std::string::npos) << out;
+    EXPECT_NE(out.find("particle id"), std::string::npos) << out;
+    const std::size_t at = out.find("The last good state, time ");
+    ASSERT_NE(at, std::string::npos) << out;
+
+    // That state is readable and every particle in it is finite
+    const std::string time = out.substr(at + 26, out.find(',', at + 26) - at - 26);
+    const state s = readState(dir, time);
+    EXPECT_GT(s.x.size(), 0);
+    for (const vector2D& x : s.x)
+    {
+        EXPECT_TRUE(std::isfinite(x.x()) && std::isfinite(x.y()));
+    }
+}
+
+
+TEST(wcsphFoam, missingSoundSpeedIsAClearError)
+{
+    const fileName dir = tankCase("wcsphNoC0", 0.05, "0.01");
+    std::string out;
+    run("sed -i '/^c0 /d' " + dir/"system"/"sphSchemes", out);
+    EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 1);
+    EXPECT_NE(out.find("Missing entry 'c0'"), std::string::npos) << out;
+    EXPECT_NE(out.find("system/sphSchemes"), std::string::npos) << out;
+}
+
+
+TEST(wcsphFoam, unknownBoundaryMethodListsTheValidOnes)
+{
+    const fileName dir = tankCase("wcsphBadBoundary", 0.05, "0.01");
+    setEntry(dir/"system"/"sphSchemes", "boundaryMethod", "ghostParticles");
+    std::string out;
+    EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 1);
+    EXPECT_NE(out.find("ghostParticles"), std::string::npos) << out;
+    EXPECT_NE(out.find("dummyRepulsive"), std::string::npos) << out;
+}
