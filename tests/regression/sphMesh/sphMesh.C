@@ -124,20 +124,26 @@ TEST(sphMeshApplication, zhouDamBreakFromSphMeshDict)
         EXPECT_NEAR(walls.segmentLength(s), dr, 0.02*dr);
     }
 
-    // Dummies: 3 layers for the modified Gaussian (support 3 dr), layer 0
-    // on the wall, none on the fluid side
+    // Dummies: 3 layers for the modified Gaussian (support 3 dr), layer k
+    // at (k + 1/2) dr behind the wall
     SPH::particles dummy(*runTime, runTime->constant(), "sphMesh/dummy", false);
     dummy.add<label>("layer");
     dummy.add<label>("patch");
     dummy.read();
     labelList perLayer(3, 0);
     for (const label k : dummy.field<label>("layer")) ++perLayer[k];
-    EXPECT_EQ(perLayer[0], walls.points().size());
+    // Along the tank's three sides (2 x 1.2 + 3.2196 long) and around
+    // its two bottom corners, about dr apart
+    EXPECT_NEAR(perLayer[0], (2*1.2 + 3.2196)/dr + 2, 3);
     EXPECT_GT(perLayer[1], perLayer[0]);
     EXPECT_GT(perLayer[2], perLayer[1]);
-    for (const vector2D& p : dummy.positions())
+    // (k + 1/2) dr behind the wall, sqrt(2) times that at the corners
+    forAll(dummy.positions(), i)
     {
-        EXPECT_LE(walls.signedDistance(p), 1e-9);
+        const scalar d = -walls.signedDistance(dummy.positions()[i]);
+        const scalar k = dummy.field<label>("layer")[i] + 0.5;
+        EXPECT_GE(d, k*dr*(1 - 1e-9));
+        EXPECT_LE(d, k*dr*std::sqrt(2.0)*(1 + 1e-9));
     }
 
     // The VTK picture reads back in ParaView's reader with every point

@@ -120,8 +120,9 @@ TEST(wcsphFoam, restartIsExactToTheBit)
     const fileName once = tankCase("wcsphRestartOnce", 0.05, "0.02");
     setEntry(once/"system"/"controlDict", "writeInterval", "0.01");
     std::string out;
-    ASSERT_EQ(run("cp -r " + once + " " + once + "Twice", out), 0);
     const fileName twice = once + "Twice";
+    rmDir(twice);
+    ASSERT_EQ(run("cp -r " + once + " " + twice, out), 0);
 
     ASSERT_EQ(run(bin + "wcsphFoam -case " + once, out), 0) << out;
 

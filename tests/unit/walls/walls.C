@@ -216,14 +216,16 @@ TEST(wallMesh, dummyLayersFillTheRingOutsideABox)
     labelList layer, patch;
     w.dummyLayers(3, dr, pos, layer, patch);
 
-    // Layer k is the outline of a square of side 1 + 2k dr: 4(10 + 2k) points
+    // Layer k is the outline of a square of side 1 + (2k + 1) dr:
+    // 4 (11 + 2k) points
     labelList n(3, 0);
     for (const label k : layer) ++n[k];
-    EXPECT_EQ(n[0], 40);
-    EXPECT_EQ(n[1], 48);
-    EXPECT_EQ(n[2], 56);
+    EXPECT_EQ(n[0], 44);
+    EXPECT_EQ(n[1], 52);
+    EXPECT_EQ(n[2], 60);
 
-    // Each lies k dr outside (in the max-norm), the corners included
+    // Each lies (k + 1/2) dr outside (in the max-norm), the corners
+    // included: the fluid lattice at (i + 1/2) dr continued
     bool foundCorner = false;
     forAll(pos, i)
     {
@@ -233,8 +235,8 @@ TEST(wallMesh, dummyLayersFillTheRingOutsideABox)
             max(-p.x(), p.x() - 1),
             max(-p.y(), p.y() - 1)
         );
-        EXPECT_NEAR(out, layer[i]*dr, 1e-12) << p.x() << " " << p.y();
-        foundCorner = foundCorner || mag(p - vector2D(-0.2, -0.2)) < 1e-12;
+        EXPECT_NEAR(out, (layer[i] + 0.5)*dr, 1e-12) << p.x() << " " << p.y();
+        foundCorner = foundCorner || mag(p - vector2D(-0.25, -0.25)) < 1e-12;
     }
     EXPECT_TRUE(foundCorner);
 }
@@ -251,15 +253,15 @@ TEST(wallMesh, dummyLayersShrinkInsideAnObstacleAndStopWhenItCloses)
     labelList layer, patch;
     w.dummyLayers(4, dr, pos, layer, patch);
 
-    // Inside a 0.3 square: layer 1 is the 0.1 square outline (4 corners),
-    // layer 2 would have negative size and is dropped
+    // Inside a 0.3 square: layer 0 is the outline of the 0.2 square
+    // (2 pieces a side), layer 1 would have no size and is dropped
     labelList n(4, 0);
     for (const label k : layer) ++n[k];
-    EXPECT_EQ(n[0], 12);
-    EXPECT_EQ(n[1], 4);
+    EXPECT_EQ(n[0], 8);
+    EXPECT_EQ(n[1], 0);
     EXPECT_EQ(n[2], 0);
     for (const vector2D& p : pos)
     {
-        EXPECT_LE(w.signedDistance(p), 1e-12);
+        EXPECT_NEAR(w.signedDistance(p), -0.5*dr, 1e-12);
     }
 }

@@ -42,8 +42,8 @@ Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
         return n;
     }
 
-    // Layer k sits k dr outside the wall and the first fluid particle dr/2
-    // inside it: enough layers to fill that particle's kernel support
+    // Layer k sits (k + 1/2) dr outside the wall and the first fluid
+    // particle dr/2 inside it: enough layers to fill its kernel support
     IOdictionary schemes
     (
         IOobject
@@ -57,7 +57,7 @@ Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
         )
     );
     const autoPtr<kernel> k(kernel::New(schemes, dr_));
-    return label(std::floor(k->support()/dr_ - 0.5 + 1e-9)) + 1;
+    return max(label(1), label(std::floor(k->support()/dr_ + 1e-9)));
 }
 
 
@@ -240,7 +240,7 @@ Foam::SPH::particleGenerator::particleGenerator
     }
 
     const label nLayers = dummyLayerCount();
-    Info<< "Dummy particle layers: " << nLayers << " (one on the wall)" << nl;
+    Info<< "Dummy particle layers: " << nLayers << nl;
     walls_->dummyLayers(nLayers, dr_, dummy_, dummyLayer_, dummyPatch_);
 }
 

@@ -432,16 +432,19 @@ void Foam::SPH::wallMesh::dummyLayers
     labelList& patch
 ) const
 {
-    DynamicList<vector2D> pts(points_);
-    DynamicList<label> lay(labelList(points_.size(), 0));
-    DynamicList<label> pat(pointPatch_);
+    // Layer k lies (k + 1/2) dr outside the wall: the fluid lattice (dr/2
+    // inside) continued through the wall, so the particle density is
+    // uniform across it and layer 0, the one next to the wall, repels
+    DynamicList<vector2D> pts;
+    DynamicList<label> lay;
+    DynamicList<label> pat;
 
     const List<labelList> chains(tracedChains());
-    for (label k = 1; k < nLayers; ++k)
+    for (label k = 0; k < nLayers; ++k)
     {
         for (const labelList& chain : chains)
         {
-            if (offsetChain(chain, k*dr, dr, pts, pat))
+            if (offsetChain(chain, (k + 0.5)*dr, dr, pts, pat))
             {
                 lay.setSize(pts.size(), k);
             }
@@ -458,7 +461,7 @@ void Foam::SPH::wallMesh::dummyLayers
     forAll(pts, i)
     {
         const vector2D& p = pts[i];
-        if (lay[i] > 0 && signedDistance(p) > 1e-6*dr)
+        if (signedDistance(p) > -0.25*dr)
         {
             continue;
         }
