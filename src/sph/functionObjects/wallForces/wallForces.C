@@ -1,0 +1,234 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "wallForces.H"
+#include "shepardInterpolation.H"
+#include "Time.H"
+#include "HashSet.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace SPH
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(wallForces, 0);
+    addToRunTimeSelectionTable(functionObject, wallForces, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::functionObjects::wallForces::selectPatches
+(
+    const dictionary& dict
+)
+{
+    const wordList& names = cloud().walls().patchNames();
+
+    DynamicList<label> selected(names.size());
+    forAll(names, patchi)
+    {
+        if (patchNames_.match(names[patchi]))
+        {
+            selected.append(patchi);
+        }
+    }
+
+    // Each entry must name something: a misspelt patch is an error, not a
+    // zero force
+    for (const wordRe& key : patchNames_)
+    {
+        bool matched = false;
+        for (const word& n : names)
+        {
+            matched = matched || key.match(n);
+        }
+        if (!matched)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Function object " << name() << ": no wall patch "
+                << key << ". The wall patches are " << names
+                << exit(FatalIOError);
+        }
+    }
+
+    patches_.transfer(selected);
+}
+
+
+void Foam::SPH::functionObjects::wallForces::writeFileHeader
+(
+    Ostream& os,
+    const word& title
+) const
+{
+    writeHeader(os, title);
+    writeHeaderValue(os, "CofR", vector(CofR_.x(), CofR_.y(), 0));
+    writeHeader(os, "");
+    writeCommented(os, "Time");
+    writeTabbed(os, "(total_x total_y total_z)");
+    writeTabbed(os, "(pressure_x pressure_y pressure_z)");
+    writeTabbed(os, "(viscous_x viscous_y viscous_z)");
+    os  << endl;
+}
+
+
+void Foam::SPH::functionObjects::wallForces::writeRow
+(
+    Ostream& os,
+    const vector& total
+) const
+{
+    // Pressure only: the total is the pressure part, viscous is not
+    // computed
+    writeCurrentTime(os);
+    os  << tab << total << tab << total << tab << vector::zero << endl;
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::functionObjects::wallForces::measure()
+{
+    const sphCloud& c = cloud();
+    const wallMesh& walls = c.walls();
+    const scalarField& p = c.parts().field<scalar>("p");
+
+    const labelHashSet selected(patches_);
+
+    shepardInterpolation interp(c);
+
+    force_ = vector2D::zero;
+    moment_ = 0;
+    nSegments_ = 0;
+    nDry_ = 0;
+
+    forAll(walls.segments(), s)
+    {
+        if (!selected.found(walls.segmentPatch()[s]))
+        {
+            continue;
+        }
+        ++nSegments_;
+
+        const labelPair& ends = walls.segments()[s];
+        const vector2D mid
+        (
+            0.5*(walls.points()[ends.first()] + walls.points()[ends.second()])
+        );
+
+        interp.setPoint(mid);
+        if (!interp.wet(minFraction_))
+        {
+            ++nDry_;
+            continue;
+        }
+
+        const scalar pMid =
+            hydrostatic_
+          ? interp.hydrostaticPressure(minFraction_)
+          : interp.interpolate(p, minFraction_);
+
+        // The fluid pushes the wall against its inward normal
+        const vector2D dF = -pMid*walls.segmentLength(s)*walls.segmentNormals()[s];
+        const vector2D arm = mid - CofR_;
+
+        force_ += dF;
+        moment_ += arm.x()*dF.y() - arm.y()*dF.x();
+    }
+}
+
+
+void Foam::SPH::functionObjects::wallForces::writeLog() const
+{
+    Info<< "    wallForces " << name() << ": force " << force_
+        << ", moment " << moment_ << " about " << CofR_
+        << " (" << nDry_ << " of " << nSegments_ << " segments dry)" << endl;
+}
+
+
+void Foam::SPH::functionObjects::wallForces::writeFiles()
+{
+    if (!filePtr_.valid())
+    {
+        filePtr_ = createFile(fileName_);
+        writeFileHeader(filePtr_(), "Force");
+    }
+    if (!momentFilePtr_.valid())
+    {
+        momentFilePtr_ = createFile("moment");
+        writeFileHeader(momentFilePtr_(), "Moment");
+    }
+
+    writeRow(file(), vector(force_.x(), force_.y(), 0));
+    writeRow(momentFilePtr_(), vector(0, 0, moment_));
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::functionObjects::wallForces::wallForces
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    sphFunctionObject(name, runTime, dict, "force"),
+    patchNames_(),
+    patches_(),
+    CofR_(vector2D::zero),
+    minFraction_(0.1),
+    hydrostatic_(false),
+    force_(vector2D::zero),
+    moment_(0),
+    nSegments_(0),
+    nDry_(0),
+    momentFilePtr_()
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+bool Foam::SPH::functionObjects::wallForces::read(const dictionary& dict)
+{
+    sphFunctionObject::read(dict);
+
+    patchNames_ = dict.get<wordRes>("patches");
+    selectPatches(dict);
+
+    CofR_ = dict.found("CofR") ? readPoint(dict, "CofR") : vector2D::zero;
+
+    minFraction_ = dict.lookupOrDefault<scalar>("minFluidFraction", 0.1);
+    if (!(minFraction_ >= 0 && minFraction_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Function object " << name() << ": minFluidFraction = "
+            << minFraction_ << ", expected a fluid fraction in [0, 1)"
+            << exit(FatalIOError);
+    }
+    hydrostatic_ = dict.lookupOrDefault<bool>("hydrostatic", false);
+
+    wordList selectedNames(patches_.size());
+    forAll(patches_, i)
+    {
+        selectedNames[i] = cloud().walls().patchNames()[patches_[i]];
+    }
+    Info<< type() << ' ' << name() << ": patches " << inParentheses(selectedNames)
+        << ", CofR " << CofR_ << ", minFluidFraction " << minFraction_
+        << (hydrostatic_ ? ", hydrostatic pressure" : "") << endl;
+
+    return true;
+}
+
+
+// ************************************************************************* //
