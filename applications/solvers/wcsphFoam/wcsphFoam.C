@@ -86,12 +86,18 @@ int main(int argc, char *argv[])
 
         if (log)
         {
+            const label nBounced = model.bouncedSinceLastCall();
+            if (nBounced)
+            {
+                Info<< "Wall bounces since the last report: " << nBounced << nl;
+            }
             Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
                 << "  ClockTime = " << runTime.elapsedClockTime() << " s"
                 << nl << endl;
         }
     }
 
+    model.printTimes();
     Info<< "Fluid particles " << model.nFluid() << ", total mass "
         << model.totalMass() << " kg/m" << nl
         << "End" << nl << endl;

@@ -49,6 +49,11 @@ TEST(surgeFront, blockFrontIsItsLastColumn)
     // has exactly 3 neighbours within 2 dr, the default minimum)
     EXPECT_NEAR(asFront(fo).front(), tank.spec.blockWidth - 0.5*tank.spec.dr, tol);
     EXPECT_EQ(asFront(fo).direction(), vector2D(1, 0));
+
+    // The particle named as the front is the one at the front
+    const label b = asFront(fo).frontParticle();
+    ASSERT_GE(b, 0);
+    EXPECT_NEAR(tank.parts->positions()[b].x(), asFront(fo).front(), tol);
 }
 
 

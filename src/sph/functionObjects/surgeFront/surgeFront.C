@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "surgeFront.H"
+#include <algorithm>
 #include "Time.H"
 #include "SortableList.H"
 #include "addToRunTimeSelectionTable.H"
@@ -87,17 +88,23 @@ void Foam::SPH::functionObjects::surgeFront::measure()
         }
     }
 
-    SortableList<scalar> sorted(s);
-    sorted.reverseSort();
+    // Furthest first (a SortableList built from s is sorted already, so
+    // its reverseSort() would index the sorted copy, not s)
+    labelList order(identity(s.size()));
+    std::stable_sort
+    (
+        order.begin(), order.end(),
+        [&](label a, label b) { return s[a] > s[b]; }
+    );
 
     front_ = -VGREAT;
     frontParticle_ = -1;
-    forAll(sorted, k)
+    for (const label k : order)
     {
-        const label b = index[sorted.indices()[k]];
+        const label b = index[k];
         if (nFluidNeighbours(c, b) >= minNeighbours_)
         {
-            front_ = sorted[k];
+            front_ = s[k];
             frontParticle_ = b;
             break;
         }

@@ -12,6 +12,7 @@
 #include "vtkWallFile.H"
 
 #include <cmath>
+#include <chrono>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -337,7 +338,9 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     nFluid_(0),
     dr_(0),
     nbrs_(true),
+    nBounced_(0),
     ratesCurrent_(false),
+    timeNeighbours_(0), timeInteractions_(0), timeIntegration_(0),
     deltaT0_(-1),
     maxSpeed_(0), maxAccel_(0), maxSoundSpeed_(0)
 {
@@ -373,6 +376,11 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
             boxMin_, boxMax_
         )
     );
+
+    if (schemes_.getOrDefault<bool>("wallBounce", true))
+    {
+        crossing_.reset(new wallCrossing(*walls_, kernel_->support()));
+    }
 }
 
 
@@ -402,7 +410,11 @@ void Foam::SPH::wcsph::printStages() const
     {
         Info<< "    viscosity          none (nu = " << nu_ << ")" << nl;
     }
-    Info<< "    time integration   classical Runge-Kutta, eq. (14)" << nl
+    Info<< "    wall crossing      "
+        << (crossing_ ? "particles that cross a wall in a step bounce back"
+            " (a safety net; counted in the log)" : "not checked (wallBounce no)")
+        << nl
+        << "    time integration   classical Runge-Kutta, eq. (14)" << nl
         << "    time step          eq. (15), C_n = maxCo "
         << runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2)
         << (runTime_.controlDict().getOrDefault<bool>("adjustTimeStep", false)
@@ -488,6 +500,7 @@ void Foam::SPH::wcsph::evolve()
         {
             computeRates();
         }
+        const auto start = std::chrono::steady_clock::now();
         const scalar w = weight[stage];
         const scalar a = stage < 3 ? stageFraction[stage]*dt : 0;
 
@@ -510,8 +523,17 @@ void Foam::SPH::wcsph::evolve()
                 rho[i] = rhoStart_[i] + dt*sumRho_[i];
             }
         }
+        timeIntegration_ += std::chrono::duration<scalar>
+        (
+            std::chrono::steady_clock::now() - start
+        ).count();
     }
     ratesCurrent_ = false;
+
+    if (crossing_)
+    {
+        nBounced_ += crossing_->bounce(x0_, parts_.positions(), parts_.field<vector2D>("U"), nF);
+    }
 
     // Pressure of the new state, and the neighbour search function
     // objects use
@@ -635,6 +657,26 @@ void Foam::SPH::wcsph::writeVTK() const
         wallFile.addCellField("patch", walls_->segmentPatch());
         vtk.writeWalls(wallFile, runTime_.timeIndex(), runTime_.value());
     }
+}
+
+
+void Foam::SPH::wcsph::printTimes() const
+{
+    const scalar total = timeNeighbours_ + timeInteractions_ + timeIntegration_;
+    if (total <= 0) return;
+    Info<< "Time in the steps: neighbour search " << timeNeighbours_ << " s ("
+        << label(100*timeNeighbours_/total + 0.5) << "%), interactions "
+        << timeInteractions_ << " s (" << label(100*timeInteractions_/total + 0.5)
+        << "%), integration " << timeIntegration_ << " s ("
+        << label(100*timeIntegration_/total + 0.5) << "%)" << nl;
+}
+
+
+Foam::label Foam::SPH::wcsph::bouncedSinceLastCall()
+{
+    const label n = nBounced_;
+    nBounced_ = 0;
+    return n;
 }
 
 

@@ -10,6 +10,8 @@ Description
 #include "wcsph.H"
 #include "kernelDispatch.H"
 
+#include <chrono>
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class Kernel>
@@ -150,8 +152,14 @@ void Foam::SPH::wcsph::fluidRates(const Kernel& W)
 
 void Foam::SPH::wcsph::computeRates()
 {
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+
     cloud_->updateCells();
     nbrs_.build(cloud_->cells(), parts_.positions(), kernel_->support(), true);
+
+    const auto searched = clock::now();
+    timeNeighbours_ += std::chrono::duration<scalar>(searched - start).count();
 
     // Fluid pressure from density, eq. (4)
     scalar* p = parts_.field<scalar>("p").data();
@@ -167,6 +175,7 @@ void Foam::SPH::wcsph::computeRates()
         fluidRates(W);
     });
     ratesCurrent_ = true;
+    timeInteractions_ += std::chrono::duration<scalar>(clock::now() - searched).count();
 }
 
 
