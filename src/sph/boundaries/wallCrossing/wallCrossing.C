@@ -125,18 +125,28 @@ Foam::label Foam::SPH::wallCrossing::bounce
     for (label i = 0; i < n; ++i)
     {
         scalar t;
-        const label s = firstCrossing(x0[i], x[i], t);
+        label s = firstCrossing(x0[i], x[i], t);
         if (s < 0) continue;
 
-        // Mirror in the wall line, reverse the normal velocity
-        const vector2D& p = walls_.points()[walls_.segments()[s].first()];
-        const vector2D& nrm = walls_.segmentNormals()[s];
-        const scalar behind = (x[i] - p) & nrm;          // < 0
-        x[i] -= 2*behind*nrm;
-        const scalar un = U[i] & nrm;
-        if (un < 0)
+        // Mirror in the wall line and reverse the normal velocity; in a
+        // corner the mirror image can be behind the other wall, so test the
+        // move again (twice at most), else stay where the step started
+        for (label bounces = 0; s >= 0; ++bounces)
         {
-            U[i] -= 2*un*nrm;
+            if (bounces == 3)
+            {
+                x[i] = x0[i];
+                break;
+            }
+            const vector2D& p = walls_.points()[walls_.segments()[s].first()];
+            const vector2D& nrm = walls_.segmentNormals()[s];
+            x[i] -= 2*((x[i] - p) & nrm)*nrm;
+            const scalar un = U[i] & nrm;
+            if (un < 0)
+            {
+                U[i] -= 2*un*nrm;
+            }
+            s = firstCrossing(x0[i], x[i], t);
         }
         ++nBounced;
     }
