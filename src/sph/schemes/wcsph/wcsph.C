@@ -113,6 +113,16 @@ void Foam::SPH::wcsph::readSchemes()
     }
 
     densityDiffusion_ = schemes_.getOrDefault<bool>("densityDiffusion", true);
+
+    // Not in 004_..., which relies on the density diffusion alone; a small
+    // alpha damps the velocity noise of water at rest
+    alphaAV_ = schemes_.getOrDefault<scalar>("artificialViscosity", 0);
+    if (alphaAV_ < 0)
+    {
+        FatalIOErrorInFunction(schemes_.lookup("artificialViscosity"))
+            << "artificialViscosity (Monaghan's alpha) must be >= 0"
+            << exit(FatalIOError);
+    }
     viscosity_ = viscosityModelNames.getOrDefault
     (
         "viscosity", schemes_, viscosityModel::Morris
@@ -331,7 +341,7 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     ),
     rho0_(0), nu_(0), g_(vector2D::zero),
     c0_(0), gamma_(7), b0_(0), ks_(1.5), K_(0),
-    densityDiffusion_(true), viscosity_(viscosityModel::Morris),
+    densityDiffusion_(true), alphaAV_(0), viscosity_(viscosityModel::Morris),
     minDeltaTFraction_(1e-3),
     walls_(new wallMesh(runTime)),
     parts_(runTime, runTime.timeName()),
@@ -409,6 +419,11 @@ void Foam::SPH::wcsph::printStages() const
     else
     {
         Info<< "    viscosity          none (nu = " << nu_ << ")" << nl;
+    }
+    if (alphaAV_ > 0)
+    {
+        Info<< "    artificial viscosity  Monaghan, alpha " << alphaAV_
+            << " (not in 004_...)" << nl;
     }
     Info<< "    wall crossing      "
         << (crossing_ ? "particles that cross a wall in a step bounce back"

@@ -73,6 +73,7 @@ void Foam::SPH::wcsph::fluidRates(const Kernel& W)
     const scalar nu = nu_;
     const scalar rhoRef = rho0_;
     const label interfacial = label(particleKind::interfacial);
+    const scalar alphaAV = alphaAV_;
 
     // Repulsion, 004_... eqs. (11)-(12)
     const scalar ksh = ks_*h;
@@ -125,6 +126,18 @@ void Foam::SPH::wcsph::fluidRates(const Kernel& W)
             if (viscous)
             {
                 dU += m*nu*(rhoI + rhoJ)/(rhoI*rhoJ)*(dW*r[k]/(r[k]*r[k] + eta2))*Uij;
+            }
+
+            // Monaghan's artificial viscosity, on approaching pairs only
+            if (alphaAV > 0)
+            {
+                const scalar ur = Uij & rij[k];
+                if (ur < 0)
+                {
+                    const scalar mu = h*ur/(r[k]*r[k] + eta2);
+                    const scalar PI = -alphaAV*0.5*(cI + c[j])*mu/(0.5*(rhoI + rhoJ));
+                    dU -= m*PI*gradW;
+                }
             }
 
             // Soft repulsion from the dummies on the wall, eqs. (11)-(12)
