@@ -486,7 +486,7 @@ void Foam::SPH::wcsph::evolve()
           + Foam::name(minDeltaTFraction_) + " of the first one ("
           + Foam::name(deltaT0_) + " s): the flow is too violent for this"
           " resolution and sound speed",
-            -1, runTime_.value()
+            -1, runTime_.value(), false
         );
     }
 
@@ -563,7 +563,7 @@ void Foam::SPH::wcsph::evolve()
     const label bad = findBadParticle(what);
     if (bad >= 0)
     {
-        fail(what, bad, runTime_.value());
+        fail(what, bad, runTime_.value(), true);
     }
 }
 
@@ -600,9 +600,16 @@ Foam::label Foam::SPH::wcsph::findBadParticle(word& what) const
 }
 
 
-void Foam::SPH::wcsph::fail(const string& what, label i, scalar tFailed)
+void Foam::SPH::wcsph::fail
+(
+    const string& what,
+    label i,
+    scalar tFailed,
+    bool stepTaken
+)
 {
-    // The state at the start of this step was good: put it back and write it
+    // The state at the start of this step was good: put it back (if the
+    // step changed it) and write it at the time it belongs to
     const label nF = nFluid_;
     vector2DField& x = parts_.positions();
     vector2DField& U = parts_.field<vector2D>("U");
@@ -616,7 +623,6 @@ void Foam::SPH::wcsph::fail(const string& what, label i, scalar tFailed)
           + " at (" + Foam::name(x[i].x()) + " " + Foam::name(x[i].y()) + ")"
           + (i < nF ? "" : " (a wall particle)");
     }
-    const bool stepTaken = x0_.size() == nF && deltaT0_ > 0;
     if (stepTaken)
     {
         for (label j = 0; j < nF; ++j)
@@ -626,8 +632,8 @@ void Foam::SPH::wcsph::fail(const string& what, label i, scalar tFailed)
             rho[j] = rhoStart_[j];
             p[j] = pressure(rho[j]);
         }
-        runTime_.setTime(runTime_.value() - runTime_.deltaTValue(), runTime_.timeIndex() - 1);
     }
+    runTime_.setTime(runTime_.value() - runTime_.deltaTValue(), runTime_.timeIndex() - 1);
     runTime_.writeNow();
     writeVTK();
 
