@@ -178,13 +178,18 @@ TEST(sphMeshApplication, damBreakFromOpenFoamTutorialMesh)
 
     auto runTime = sphTest::makeTime(dir);
     const SPH::wallMesh walls(*runTime);
-    EXPECT_EQ(walls.patchNames(), wordList({"leftWall", "rightWall", "lowerWall"}));
+    // The tutorial closes the top too (atmosphere as a wall)
+    EXPECT_EQ
+    (
+        walls.patchNames(),
+        wordList({"leftWall", "rightWall", "lowerWall", "atmosphere"})
+    );
 
-    // Tank bottom corners and the obstacle's feet see a quarter of fluid,
-    // the obstacle's top corners three quarters; the tops of the side walls
-    // are free ends
-    EXPECT_EQ(countAngle(walls, 0.5*pi), 4);
+    // The tank's four corners and the obstacle's feet see a quarter of
+    // fluid, the obstacle's top corners three quarters; a closed loop
+    EXPECT_EQ(countAngle(walls, 0.5*pi), 6);
     EXPECT_EQ(countAngle(walls, 1.5*pi), 2);
+    EXPECT_EQ(walls.points().size(), walls.segments().size());
 
     // The water: the cells setFields marked (x < 0.1461, y < 0.292)
     // snapped to the mesh, then the lattice at dr/2 from walls
