@@ -115,10 +115,16 @@ TEST(sphMeshApplication, zhouDamBreakFromSphMeshDict)
     EXPECT_NEAR(minX, 0.5*dr, 1e-12);
     EXPECT_NEAR(minY, 0.5*dr, 1e-12);
 
-    // Walls: one open tank, the two bottom corners see a quarter of fluid
+    // Walls: four patches joined into one closed tank; its corners see a
+    // quarter of fluid
     const SPH::wallMesh walls(*runTime);
-    EXPECT_EQ(walls.patchNames().size(), 1);
-    EXPECT_EQ(countAngle(walls, 0.5*pi), 2);
+    EXPECT_EQ
+    (
+        walls.patchNames(),
+        wordList({"leftWall", "bottom", "rightWall", "top"})
+    );
+    EXPECT_EQ(countAngle(walls, 0.5*pi), 4);
+    EXPECT_EQ(walls.points().size(), walls.segments().size());
     forAll(walls.segments(), s)
     {
         EXPECT_NEAR(walls.segmentLength(s), dr, 0.02*dr);
@@ -132,9 +138,9 @@ TEST(sphMeshApplication, zhouDamBreakFromSphMeshDict)
     dummy.read();
     labelList perLayer(3, 0);
     for (const label k : dummy.field<label>("layer")) ++perLayer[k];
-    // Along the tank's three sides (2 x 1.2 + 3.2196 long) and around
-    // its two bottom corners, about dr apart
-    EXPECT_NEAR(perLayer[0], (2*1.2 + 3.2196)/dr + 2, 3);
+    // Around the tank (2 x (1.8 + 3.2196) long) and its four corners,
+    // about dr apart
+    EXPECT_NEAR(perLayer[0], 2*(1.8 + 3.2196)/dr + 4, 4);
     EXPECT_GT(perLayer[1], perLayer[0]);
     EXPECT_GT(perLayer[2], perLayer[1]);
     // (k + 1/2) dr behind the wall, sqrt(2) times that at the corners
