@@ -16,26 +16,15 @@ Description
 #include "wallMesh.H"
 #include "mathematicalConstants.H"
 
-#include <sys/wait.h>
 
 using namespace Foam;
+using sphTest::run;
 using constant::mathematical::pi;
 
 namespace
 {
     const std::string sphMeshExe = std::string(SPHFOAM_BINARY_DIR) + "/applications/sphMesh";
-    const std::string env = "WM_PROJECT_DIR=/usr/share/openfoam ";
 
-    //- Run a command, returning its exit status; output goes to out
-    int run(const std::string& cmd, std::string& out)
-    {
-        out.clear();
-        FILE* pipe = popen((env + cmd + " 2>&1").c_str(), "r");
-        char buf[4096];
-        while (fgets(buf, sizeof(buf), pipe)) out += buf;
-        const int status = pclose(pipe);
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
 
     //- A copy of a tutorial case in the build folder
     fileName copyTutorial(const std::string& tutorial, const std::string& name)

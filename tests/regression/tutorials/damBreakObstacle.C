@@ -15,21 +15,11 @@ Description
 
 #include <fstream>
 #include <map>
-#include <sys/wait.h>
 
 using namespace Foam;
 
 namespace
 {
-    int runShell(const std::string& cmd, std::string& out)
-    {
-        out.clear();
-        FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
-        char buf[4096];
-        while (fgets(buf, sizeof(buf), pipe)) out += buf;
-        const int status = pclose(pipe);
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
 
     std::map<std::string, std::string> readTable(const fileName& file)
     {
@@ -53,14 +43,14 @@ TEST(damBreakObstacleTutorial, oneAllrunGivesFrontsPicturesAndRunTimes)
     rmDir(dir);
     mkDir(dir.path());
     std::string out;
-    ASSERT_EQ(runShell("cp -r " + std::string(SPHFOAM_SOURCE_DIR) + "/tutorials/damBreak/obstacle " + dir, out), 0);
+    ASSERT_EQ(sphTest::run("cp -r " + std::string(SPHFOAM_SOURCE_DIR) + "/tutorials/damBreak/obstacle " + dir, out), 0);
 
     const std::string source = std::string(SPHFOAM_SOURCE_DIR);
     // As the README says: source etc/bashrc from the project folder (a
     // POSIX shell cannot tell a sourced file where it is)
     ASSERT_EQ
     (
-        runShell
+        sphTest::run
         (
             "cd " + source + " && unset SPHFOAM_PROJECT_DIR && . ./etc/bashrc && "
           + dir + "/Allrun -test",

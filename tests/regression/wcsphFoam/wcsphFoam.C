@@ -13,24 +13,14 @@ Description
 #include "particles.H"
 #include "wallMesh.H"
 
-#include <sys/wait.h>
 
 using namespace Foam;
+using sphTest::run;
 
 namespace
 {
     const std::string bin = std::string(SPHFOAM_BINARY_DIR) + "/applications/";
-    const std::string env = "WM_PROJECT_DIR=/usr/share/openfoam ";
 
-    int run(const std::string& cmd, std::string& out)
-    {
-        out.clear();
-        FILE* pipe = popen((env + cmd + " 2>&1").c_str(), "r");
-        char buf[4096];
-        while (fgets(buf, sizeof(buf), pipe)) out += buf;
-        const int status = pclose(pipe);
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
 
     //- The hydrostatic tank tutorial copied, with entries changed by sed
     fileName tankCase(const std::string& name, scalar dr, const std::string& endTime)
