@@ -107,8 +107,10 @@ void Foam::SPH::wcsph::fluidRates(const Kernel& W)
             const label j = nbr[k];
             const scalar rhoJ = rho[j];
             const scalar Vj = m/rhoJ;
-            const scalar dW = W.dWdr(r[k]);
-            const vector2D gradW = (r[k] > 0 ? dW/r[k] : 0)*rij[k];
+            // dW/dr / r is finite at r = 0 for every kernel: no branch
+            const scalar dWbyR = W.dWdrByR(r[k]);
+            const scalar dW = dWbyR*r[k];
+            const vector2D gradW = dWbyR*rij[k];
             const vector2D Uij = U[i] - U[j];
 
             // Continuity, eq. (6), with Rusanov diffusion (n_ij.gradW = -dW)
