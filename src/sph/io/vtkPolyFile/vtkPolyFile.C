@@ -294,10 +294,11 @@ Foam::wordList Foam::SPH::vtkPolyFile::cellFieldNames() const
 }
 
 
+template<class Type>
 void Foam::SPH::vtkPolyFile::addPointField
 (
     const word& name,
-    const UList<scalar>& values
+    const UList<Type>& values
 )
 {
     checkNewArray(name, values.size(), true);
@@ -305,32 +306,11 @@ void Foam::SPH::vtkPolyFile::addPointField
 }
 
 
-void Foam::SPH::vtkPolyFile::addPointField
-(
-    const word& name,
-    const UList<vector2D>& values
-)
-{
-    checkNewArray(name, values.size(), true);
-    vtk_->poly->GetPointData()->AddArray(newArray(name, values));
-}
-
-
-void Foam::SPH::vtkPolyFile::addPointField
-(
-    const word& name,
-    const UList<label>& values
-)
-{
-    checkNewArray(name, values.size(), true);
-    vtk_->poly->GetPointData()->AddArray(newArray(name, values));
-}
-
-
+template<class Type>
 void Foam::SPH::vtkPolyFile::addCellField
 (
     const word& name,
-    const UList<scalar>& values
+    const UList<Type>& values
 )
 {
     checkNewArray(name, values.size(), false);
@@ -338,26 +318,18 @@ void Foam::SPH::vtkPolyFile::addCellField
 }
 
 
-void Foam::SPH::vtkPolyFile::addCellField
-(
-    const word& name,
-    const UList<vector2D>& values
-)
-{
-    checkNewArray(name, values.size(), false);
-    vtk_->poly->GetCellData()->AddArray(newArray(name, values));
-}
+// The three field types a file can hold
+#define makeVtkPolyFileFields(Type)                                            \
+    template void Foam::SPH::vtkPolyFile::addPointField                        \
+    (const word&, const UList<Type>&);                                          \
+    template void Foam::SPH::vtkPolyFile::addCellField                         \
+    (const word&, const UList<Type>&);
 
+makeVtkPolyFileFields(Foam::scalar)
+makeVtkPolyFileFields(Foam::vector2D)
+makeVtkPolyFileFields(Foam::label)
 
-void Foam::SPH::vtkPolyFile::addCellField
-(
-    const word& name,
-    const UList<label>& values
-)
-{
-    checkNewArray(name, values.size(), false);
-    vtk_->poly->GetCellData()->AddArray(newArray(name, values));
-}
+#undef makeVtkPolyFileFields
 
 
 void Foam::SPH::vtkPolyFile::write(const fileName& file, const scalar time) const
