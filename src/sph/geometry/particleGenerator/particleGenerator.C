@@ -93,21 +93,18 @@ void Foam::SPH::particleGenerator::seedFluid
     const label i1 = label(std::ceil((hi.x() - origin.x())/dr_ - 0.5));
     const label j0 = label(std::floor((lo.y() - origin.y())/dr_ - 0.5));
     const label j1 = label(std::ceil((hi.y() - origin.y())/dr_ - 0.5));
-    const label nRows = j1 - j0 + 1;
 
     // dr/2 from the walls, less round-off
     const scalar minDist = 0.5*dr_*(1 - 1e-6);
 
-    List<DynamicList<vector2D>> rows(nRows);
-    labelList outside(nRows, 0);
-    List<vector2D> firstOutside(nRows, vector2D::zero);
-
-    for (label r = 0; r < nRows; ++r)
+    DynamicList<vector2D> pts;
+    label nOutside = 0;
+    vector2D example(vector2D::zero);
+    for (label j = j0; j <= j1; ++j)
     {
-        const scalar y = origin.y() + (j0 + r + 0.5)*dr_;
         for (label i = i0; i <= i1; ++i)
         {
-            const vector2D p(origin.x() + (i + 0.5)*dr_, y);
+            const vector2D p(origin + dr_*vector2D(i + 0.5, j + 0.5));
             if (!isFluid(p))
             {
                 continue;
@@ -115,23 +112,13 @@ void Foam::SPH::particleGenerator::seedFluid
             const scalar d = walls_->signedDistance(p);
             if (d >= minDist)
             {
-                rows[r].append(p);
+                pts.append(p);
             }
-            else if (d < -minDist)
+            else if (d < -minDist && !nOutside++)
             {
-                if (!outside[r]++) firstOutside[r] = p;
+                example = p;
             }
         }
-    }
-
-    DynamicList<vector2D> pts;
-    label nOutside = 0;
-    vector2D example(vector2D::zero);
-    forAll(rows, r)
-    {
-        pts.append(rows[r]);
-        if (outside[r] && !nOutside) example = firstOutside[r];
-        nOutside += outside[r];
     }
 
     if (outsideIsError && nOutside)
