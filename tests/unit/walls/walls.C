@@ -265,3 +265,38 @@ TEST(wallMesh, dummyLayersShrinkInsideAnObstacleAndStopWhenItCloses)
         EXPECT_NEAR(w.signedDistance(p), -0.5*dr, 1e-12);
     }
 }
+
+
+TEST(wallMesh, dummyLayersLeaveOutACrestNarrowerThanTheirOffset)
+{
+    // A weir plate in a channel: its crest (0.05) is narrower than the
+    // offset of every layer, whose mitred corners meet beyond it. The
+    // collapsed crest pieces are left out; the faces keep their layers.
+    const scalar dr = 0.1;
+    const wallMesh w = makeWalls
+    (
+        "bed  { type line; points ((0 0) (1 0)); }"
+        "weir { type polyline; points ((1 0) (1 1) (1.05 1) (1.55 0.5) (1.55 0)); }"
+        "bed2 { type line; points ((1.55 0) (3 0)); }",
+        dr
+    );
+    List<vector2D> pos;
+    labelList layer, patch;
+    w.dummyLayers(3, dr, pos, layer, patch);
+    ASSERT_GT(pos.size(), 0);
+
+    label nUpstream = 0, nDownstream = 0;
+    forAll(pos, i)
+    {
+        // Never on the fluid side
+        EXPECT_LT(w.signedDistance(pos[i]), -0.25*dr) << "dummy " << i;
+        if (layer[i] == 0 && pos[i].y() > 0)
+        {
+            if (mag(pos[i].x() - (1 + 0.5*dr)) < 1e-9) ++nUpstream;
+            if (mag(pos[i].x() - (1.55 - 0.5*dr)) < 1e-9) ++nDownstream;
+        }
+    }
+    // The first layer runs along both faces of the plate
+    EXPECT_GE(nUpstream, 9);
+    EXPECT_GE(nDownstream, 4);
+}

@@ -393,10 +393,12 @@ bool Foam::SPH::wallMesh::offsetChain
         offset[k] = points_[v] + d*m;
     }
 
-    // Split every offset edge into pieces of about dr; a reversed edge
-    // means the offset has collapsed (a thin body)
+    // Split every offset edge into pieces of about dr. A reversed edge has
+    // collapsed: a wall shorter than the offset between two corners turning
+    // the same way (the narrow crest of a weir plate). It is left out; its
+    // neighbours' offsets overlap there, and the caller drops the overlap.
     const label nEdges = closed ? knots.size() : knots.size() - 1;
-    const label start = pts.size();
+    bool any = false;
     for (label e = 0; e < nEdges; ++e)
     {
         const label k1 = (e + 1) % knots.size();
@@ -406,10 +408,9 @@ bool Foam::SPH::wallMesh::offsetChain
             points_[chain[closed && k1 == 0 ? nSeg : knots[k1]]] - points_[chain[knots[e]]];
         if (((b - a) & orig) <= 0)
         {
-            pts.setSize(start);
-            patch.setSize(start);
-            return false;
+            continue;
         }
+        any = true;
         const label patchi = segmentPatch_[segmentOut_[chain[knots[e]]]];
         const label n = max(label(1), label(std::round(mag(b - a)/dr)));
         const label nPts = (!closed && e == nEdges - 1) ? n + 1 : n;
@@ -419,7 +420,7 @@ bool Foam::SPH::wallMesh::offsetChain
             patch.append(patchi);
         }
     }
-    return true;
+    return any;
 }
 
 
