@@ -13,53 +13,15 @@ Description
 #include <gtest/gtest.h>
 #include "testCase.H"
 
-#include <fstream>
-#include <map>
-
 using namespace Foam;
-
-namespace
-{
-
-    std::map<std::string, std::string> readTable(const fileName& file)
-    {
-        std::map<std::string, std::string> values;
-        std::ifstream is(file);
-        std::string key, value;
-        while (is >> key)
-        {
-            if (key[0] == '#') { std::getline(is, value); continue; }
-            is >> value;
-            values[key] = value;
-        }
-        return values;
-    }
-}
-
 
 TEST(damBreakObstacleTutorial, oneAllrunGivesFrontsPicturesAndRunTimes)
 {
-    const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"damBreakObstacle";
-    rmDir(dir);
-    mkDir(dir.path());
+    const fileName dir = sphTest::copyTutorial("damBreak/obstacle", "damBreakObstacle");
     std::string out;
-    ASSERT_EQ(sphTest::run("cp -r " + std::string(SPHFOAM_SOURCE_DIR) + "/tutorials/damBreak/obstacle " + dir, out), 0);
+    ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun -test", out), 0) << out;
 
-    const std::string source = std::string(SPHFOAM_SOURCE_DIR);
-    // As the README says: source etc/bashrc from the project folder (a
-    // POSIX shell cannot tell a sourced file where it is)
-    ASSERT_EQ
-    (
-        sphTest::run
-        (
-            "cd " + source + " && unset SPHFOAM_PROJECT_DIR && . ./etc/bashrc && "
-          + dir + "/Allrun -test",
-            out
-        ),
-        0
-    ) << out;
-
-    const auto table = readTable(dir/"comparison.dat");
+    const auto table = sphTest::readKeyValues(dir/"comparison.dat");
     ASSERT_TRUE(table.count("front_max_relative_difference")) << out;
     EXPECT_GE(std::stoi(table.at("front_points_before_obstacle")), 3);
     EXPECT_LT(std::stod(table.at("front_max_relative_difference")), 0.10);
