@@ -1,0 +1,454 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "usawOperators.H"
+
+// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace SPH
+{
+namespace usaw
+{
+namespace detail
+{
+
+//- result_a = (sum_b pair(a, b, r_ab, |r_ab|) + sum_s wall(a, s, grad
+//- gamma_as, d_as))/gamma_a for every target a: the shape shared by all
+//- operators of (5)-(10), (15), (37). The terms are inlined lambdas.
+template<class Type, class PairTerm, class WallTerm>
+inline void sumOverNeighboursAndWalls
+(
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const PairTerm& pair,
+    const WallTerm& wall,
+    UList<Type>& result
+)
+{
+    const label n = nbrs.size();
+    const label* off = nbrs.offsets().cdata();
+    const label* nbr = nbrs.indices().cdata();
+    const vector2D* rab = nbrs.rij().cdata();
+    const scalar* r = nbrs.r().cdata();
+
+    const scalar* gamma = walls.gamma().cdata();
+    const label* wOff = walls.offsets().cdata();
+    const label* seg = walls.segments().cdata();
+    const vector2D* gradGammaAs = walls.gradGammaAs().cdata();
+    const scalar* dAs = walls.distances().cdata();
+
+    Type* res = result.data();
+
+    #pragma omp parallel for schedule(static)
+    for (label a = 0; a < n; ++a)
+    {
+        Type sum(Zero);
+        for (label k = off[a]; k < off[a + 1]; ++k)
+        {
+            sum += pair(a, nbr[k], rab[k], r[k]);
+        }
+        for (label k = wOff[a]; k < wOff[a + 1]; ++k)
+        {
+            sum += wall(a, seg[k], gradGammaAs[k], dAs[k]);
+        }
+        res[a] = sum/gamma[a];
+    }
+}
+
+
+//- Mean of a per-particle field over the two vertex particles of each
+//- segment: A_s (000_8c7cd3aabddcf18a.txt after eq. (43))
+template<class Type>
+inline Type segmentValue
+(
+    const labelPair* ends,
+    const Type* A,
+    const label s
+)
+{
+    return 0.5*(A[ends[s].first()] + A[ends[s].second()]);
+}
+
+} // End namespace detail
+} // End namespace usaw
+} // End namespace SPH
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+template<class Kernel>
+void Foam::SPH::usaw::gradPlus
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const scalarUList& A,
+    UList<vector2D>& result
+)
+{
+    checkOperands("gradPlus", nbrs, walls, V.size(), {A.size()}, -1, result.size());
+    const scalar* v = V.cdata();
+    const scalar* a = A.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    // Eq. (5)
+    detail::sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D& rij, const scalar r)
+        {
+            return v[j]*(a[i] + a[j])*K.gradW(rij, r);
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return -(a[i] + detail::segmentValue(ends, a, s))*gradGammaAs;
+        },
+        result
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::gradMinus
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const scalarUList& A,
+    UList<vector2D>& result
+)
+{
+    checkOperands("gradMinus", nbrs, walls, V.size(), {A.size()}, -1, result.size());
+    const scalar* v = V.cdata();
+    const scalar* a = A.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    // Eq. (8)
+    detail::sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D& rij, const scalar r)
+        {
+            return -v[j]*(a[i] - a[j])*K.gradW(rij, r);
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return (a[i] - detail::segmentValue(ends, a, s))*gradGammaAs;
+        },
+        result
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::gradMinus
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const UList<vector2D>& u,
+    UList<tensor2D>& result
+)
+{
+    checkOperands("gradMinus", nbrs, walls, V.size(), {u.size()}, -1, result.size());
+    const scalar* v = V.cdata();
+    const vector2D* U = u.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    // Eq. (8) with grad w (x) u_ab: OpenFOAM's (grad u)_ij = d u_j/d x_i
+    detail::sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D& rij, const scalar r)
+        {
+            return -v[j]*(K.gradW(rij, r)*(U[i] - U[j]));
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return gradGammaAs*(U[i] - detail::segmentValue(ends, U, s));
+        },
+        result
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::div
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const UList<vector2D>& u,
+    UList<scalar>& result
+)
+{
+    checkOperands("div", nbrs, walls, V.size(), {u.size()}, -1, result.size());
+    const scalar* v = V.cdata();
+    const vector2D* U = u.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    // Eq. (9)
+    detail::sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D& rij, const scalar r)
+        {
+            return -v[j]*((U[i] - U[j]) & K.gradW(rij, r));
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return (U[i] - detail::segmentValue(ends, U, s)) & gradGammaAs;
+        },
+        result
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::divPosition
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    UList<scalar>& result
+)
+{
+    checkOperands("divPosition", nbrs, walls, V.size(), {}, -1, result.size());
+    const scalar* v = V.cdata();
+
+    // Eq. (9) for A = r: r_ab from the neighbour list (minimum image) and
+    // r_as . grad gamma_as = d_as |grad gamma_as|, since grad gamma_as is
+    // along n_s and the segment's centre is the mean of its vertices
+    detail::sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label, const label j, const vector2D& rij, const scalar r)
+        {
+            return -v[j]*(rij & K.gradW(rij, r));
+        },
+        [&](const label, const label, const vector2D& gradGammaAs, const scalar d)
+        {
+            return d*mag(gradGammaAs);
+        },
+        result
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::laplacian
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const scalarUList& A,
+    const scalarUList& dAdn,
+    UList<scalar>& result
+)
+{
+    checkOperands
+    (
+        "laplacian", nbrs, walls, V.size(), {A.size()}, dAdn.size(), result.size()
+    );
+    const scalar* v = V.cdata();
+    const scalar* a = A.cdata();
+    const scalar* g = dAdn.cdata();
+
+    // Eq. (40): B = 1 and (grad A)_a . n_s = (grad A)_s . n_s;
+    // r_ab . grad w_ab/r_ab^2 = dW/dr/r
+    detail::sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D&, const scalar r)
+        {
+            return 2*v[j]*(a[i] - a[j])*K.dWdrByR(r);
+        },
+        [&](const label, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return -2*g[s]*mag(gradGammaAs);
+        },
+        result
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::laplacian
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const scalarUList& B,
+    const scalarUList& A,
+    const scalarUList& dAdn,
+    UList<scalar>& result
+)
+{
+    checkOperands
+    (
+        "laplacian", nbrs, walls, V.size(), {B.size(), A.size()}, dAdn.size(),
+        result.size()
+    );
+    const scalar* v = V.cdata();
+    const scalar* b = B.cdata();
+    const scalar* a = A.cdata();
+    const scalar* g = dAdn.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    // Eq. (10) with (grad A)_a . n_s = (grad A)_s . n_s (section 3.3)
+    detail::sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D&, const scalar r)
+        {
+            return v[j]*(b[i] + b[j])*(a[i] - a[j])*K.dWdrByR(r);
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return -(detail::segmentValue(ends, b, s) + b[i])*g[s]*mag(gradGammaAs);
+        },
+        result
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::laplacian
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const scalarUList& B,
+    const scalarUList& A,
+    const scalarUList& dAdn,
+    const UList<vector2D>& gradA,
+    UList<scalar>& result
+)
+{
+    checkOperands
+    (
+        "laplacian", nbrs, walls, V.size(), {B.size(), A.size(), gradA.size()},
+        dAdn.size(), result.size()
+    );
+    const scalar* v = V.cdata();
+    const scalar* b = B.cdata();
+    const scalar* a = A.cdata();
+    const scalar* g = dAdn.cdata();
+    const vector2D* ga = gradA.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    // Eq. (10) as printed: grad gamma_as = |grad gamma_as| n_s, so
+    // (grad A)_s . grad gamma_as = dAdn_s |grad gamma_as|
+    detail::sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D&, const scalar r)
+        {
+            return v[j]*(b[i] + b[j])*(a[i] - a[j])*K.dWdrByR(r);
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return
+              - detail::segmentValue(ends, b, s)*g[s]*mag(gradGammaAs)
+              - b[i]*(ga[i] & gradGammaAs);
+        },
+        result
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::laminarViscous
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const scalar mu,
+    const UList<vector2D>& u,
+    const scalar dr,
+    UList<vector2D>& result
+)
+{
+    checkOperands("laminarViscous", nbrs, walls, V.size(), {u.size()}, -1, result.size());
+    const scalar* v = V.cdata();
+    const vector2D* U = u.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+    const vector2D* normal = walls.segmentNormals().cdata();
+
+    // Eq. (15)
+    detail::sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D&, const scalar r)
+        {
+            return (2*mu*v[j]*K.dWdrByR(r))*(U[i] - U[j]);
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar d)
+        {
+            // Velocity relative to the segment, its part along the wall
+            // ((u^R . t_as) t_as of eq. (16)) and eq. (17)
+            const vector2D& n = normal[s];
+            const vector2D uR(U[i] - detail::segmentValue(ends, U, s));
+            const vector2D uRt(uR - (uR & n)*n);
+            const scalar drAs = max(d, dr);
+            return (-2*mu*mag(gradGammaAs)/drAs)*uRt;
+        },
+        result
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::concentrationGradient
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    UList<vector2D>& result
+)
+{
+    checkOperands("concentrationGradient", nbrs, walls, V.size(), {}, -1, result.size());
+    const scalar* v = V.cdata();
+
+    // Eq. (37)
+    detail::sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label, const label j, const vector2D& rij, const scalar r)
+        {
+            return v[j]*K.gradW(rij, r);
+        },
+        [&](const label, const label, const vector2D& gradGammaAs, const scalar)
+        {
+            return -gradGammaAs;
+        },
+        result
+    );
+}
+
+
+// ************************************************************************* //
