@@ -201,3 +201,56 @@ TEST_F(neighbourListTest, excludeSelfNeedsTheCellListPoints)
 
 
 // ************************************************************************* //
+
+
+TEST_F(neighbourListTest, refreshedVerletListHoldsEveryPairWithinTheRadius)
+{
+    // Built with radius + skin, then every point moves less than skin/2
+    // (across the periodic seams too): the refreshed list still contains
+    // all pairs within radius, with their new separations
+    const scalar skin = 0.2*radius;
+    SPH::cellLinkedList cells(lo, hi, radius + skin, {true, true});
+    cells.build(pts_);
+    SPH::neighbourList nl(true);
+    nl.build(cells, pts_, radius + skin, true);
+
+    List<vector2D> moved(pts_);
+    const List<vector2D> dir(randomPoints(pts_.size(), vector2D(-1, -1), vector2D(1, 1)));
+    forAll(moved, i)
+    {
+        moved[i] += 0.49*skin*dir[i]/max(mag(dir[i]), 1.0);
+    }
+    nl.refresh(cells, moved, moved);
+
+    const vector2D period(periodOf(cells));
+    label nWithin = 0;
+    forAll(moved, i)
+    {
+        const std::vector<hit> truth(bruteForce(moved[i], moved, radius, period));
+        std::vector<label> within;
+        for (label k = nl.offsets()[i]; k < nl.offsets()[i + 1]; ++k)
+        {
+            if (nl.r()[k] < radius)
+            {
+                within.push_back(nl.indices()[k]);
+            }
+            EXPECT_NEAR(nl.r()[k], mag(nl.rij()[k]), 1e-15);
+        }
+        std::sort(within.begin(), within.end());
+        std::vector<label> expected(indices(truth));
+        expected.erase(std::remove(expected.begin(), expected.end(), i), expected.end());
+        ASSERT_EQ(within, expected) << "target " << i;
+        nWithin += within.size();
+    }
+    EXPECT_GT(nWithin, 10*pts_.size());
+}
+
+
+TEST_F(neighbourListTest, refreshNeedsStoredGeometry)
+{
+    SPH::cellLinkedList cells(lo, hi, radius);
+    cells.build(pts_);
+    SPH::neighbourList nl(false);
+    nl.build(cells, pts_, radius, true);
+    EXPECT_THROW(nl.refresh(cells, pts_, pts_), Foam::error);
+}

@@ -169,4 +169,41 @@ void Foam::SPH::neighbourList::build
 }
 
 
+void Foam::SPH::neighbourList::refresh
+(
+    const cellLinkedList& cells,
+    const UList<vector2D>& targets,
+    const UList<vector2D>& points
+)
+{
+    if (!storeGeometry_ || targets.size() != size())
+    {
+        FatalErrorInFunction
+            << "Refresh of a neighbour list "
+            << (storeGeometry_ ? "" : "without stored geometry ")
+            << "built for " << size() << " targets with " << targets.size()
+            << exit(FatalError);
+    }
+
+    const label n = targets.size();
+    const vector2D* __restrict__ x = targets.cdata();
+    const vector2D* __restrict__ y = points.cdata();
+    const label* __restrict__ off = offsets_.cdata();
+    const label* __restrict__ idx = indices_.cdata();
+    vector2D* __restrict__ rij = rij_.data();
+    scalar* __restrict__ r = r_.data();
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        const vector2D xi(cells.wrap(x[i]));
+        for (label k = off[i]; k < off[i + 1]; ++k)
+        {
+            rij[k] = cells.minimumImage(xi - cells.wrap(y[idx[k]]));
+            r[k] = mag(rij[k]);
+        }
+    }
+}
+
+
 // ************************************************************************* //
