@@ -11,6 +11,10 @@ Description
     - neighbourListBuild: CSR lists from a built cell list (arg geometry:
                           also store rij and r)
     - buildAndList:       both, as a solver does every step
+    - verletRefresh:      new rij and r for the pairs of a list built with
+                          radius + 0.2 radius (the skin), which a solver
+                          does instead of buildAndList while no particle
+                          has moved half the skin
 
     Pairs are directed (i, j), self excluded; rates are per wall-clock
     second. One untimed build first: a solver rebuilds into storage sized
@@ -142,6 +146,26 @@ static void buildAndList(benchmark::State& state)
 }
 
 
+// Args: radius/dr, threads
+static void verletRefresh(benchmark::State& state)
+{
+    const scalar radius = 1.2*state.range(0)*dr;
+    omp_set_num_threads(state.range(1));
+    const List<vector2D>& x = lattice();
+    SPH::cellLinkedList cells(makeCells(radius));
+    SPH::neighbourList nbrs(true);
+    cells.build(x);
+    nbrs.build(cells, x, radius, true);
+
+    for (auto _ : state)
+    {
+        nbrs.refresh(cells, x, x);
+        benchmark::ClobberMemory();
+    }
+    setCounters(state, nbrs.nPairs(), x.size());
+}
+
+
 BENCHMARK(cellListBuild)
     ->ArgsProduct({{2, 3}, {1, 2}})
     ->ArgNames({"radiusByDr", "threads"})
@@ -155,6 +179,12 @@ BENCHMARK(neighbourListBuild)
     ->Unit(benchmark::kMillisecond);
 
 BENCHMARK(buildAndList)
+    ->ArgsProduct({{2, 3}, {1, 2}})
+    ->ArgNames({"radiusByDr", "threads"})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
+BENCHMARK(verletRefresh)
     ->ArgsProduct({{2, 3}, {1, 2}})
     ->ArgNames({"radiusByDr", "threads"})
     ->UseRealTime()
