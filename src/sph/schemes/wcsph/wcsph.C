@@ -132,6 +132,14 @@ void Foam::SPH::wcsph::readSchemes()
         viscosity_ = viscosityModel::none;
     }
     minDeltaTFraction_ = schemes_.getOrDefault<scalar>("minDeltaTFraction", 1e-3);
+    skinByH_ = schemes_.getOrDefault<scalar>("neighbourSkin", 0.2);
+    if (skinByH_ < 0)
+    {
+        FatalIOErrorInFunction(schemes_)
+            << "neighbourSkin " << skinByH_ << ": expected a length in h >= 0"
+            << " (0: rebuild the neighbour list at every stage)"
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -348,6 +356,11 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     nFluid_(0),
     dr_(0),
     nbrs_(true),
+    skinByH_(0.2),
+    skin_(0),
+    listBuilt_(false),
+    nListBuilds_(0),
+    nListRefreshes_(0),
     nBounced_(0),
     ratesCurrent_(false),
     timeNeighbours_(0), timeInteractions_(0), timeIntegration_(0),
@@ -370,6 +383,7 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     }
     kernel_ = kernel::New(schemes_, dr_);
     readSchemes();
+    skin_ = skinByH_*kernel_->h();
     initialise();
 
     // The domain: the walls' box and a margin for splashes
@@ -396,11 +410,24 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+std::string Foam::SPH::wcsph::neighbourPolicy() const
+{
+    if (skin_ > 0)
+    {
+        return
+            "Verlet list within support + " + std::string(Foam::name(skinByH_))
+          + " h: refreshed at every stage, rebuilt after every write and"
+            " when a particle has moved half the skin";
+    }
+    return "rebuilt at every stage";
+}
+
+
 void Foam::SPH::wcsph::printStages() const
 {
     Info<< "WCSPH (004_f29223b75201dc88.txt), stages of each Runge-Kutta stage:"
         << nl
-        << "    neighbours         cell-linked list, rebuilt at every stage" << nl
+        << "    neighbours         cell-linked list, " << neighbourPolicy().c_str() << nl
         << "    wall particles     dummy pressure eq. (10), density from eq. (4)"
         << nl
         << "    equation of state  Tait eq. (4): c0 " << c0_ << ", gamma "
@@ -559,6 +586,13 @@ void Foam::SPH::wcsph::evolve()
     }
     cloud_->updateCells();
 
+    // A restart from this time builds a new list at its first step: so does
+    // this run, or the two would sum the pairs in different orders
+    if (runTime_.writeTime())
+    {
+        listBuilt_ = false;
+    }
+
     word what;
     const label bad = findBadParticle(what);
     if (bad >= 0)
@@ -689,7 +723,9 @@ void Foam::SPH::wcsph::printTimes() const
         << label(100*timeNeighbours_/total + 0.5) << "%), interactions "
         << timeInteractions_ << " s (" << label(100*timeInteractions_/total + 0.5)
         << "%), integration " << timeIntegration_ << " s ("
-        << label(100*timeIntegration_/total + 0.5) << "%)" << nl;
+        << label(100*timeIntegration_/total + 0.5) << "%)" << nl
+        << "Neighbour lists: " << nListBuilds_ << " built, "
+        << nListRefreshes_ << " refreshed" << nl;
 }
 
 

@@ -165,13 +165,40 @@ void Foam::SPH::wcsph::fluidRates(const Kernel& W)
 }
 
 
+void Foam::SPH::wcsph::updateNeighbours()
+{
+    const vector2DField& x = parts_.positions();
+
+    // Walls do not move: the fluid particles alone decide
+    bool valid = listBuilt_;
+    const scalar maxMove2 = sqr(0.5*skin_);
+    for (label i = 0; i < nFluid_ && valid; ++i)
+    {
+        valid = magSqr(x[i] - positionsAtBuild_[i]) <= maxMove2;
+    }
+
+    if (valid)
+    {
+        nbrs_.refresh(cloud_->cells(), x, x);
+        ++nListRefreshes_;
+    }
+    else
+    {
+        cloud_->updateCells();
+        nbrs_.build(cloud_->cells(), x, kernel_->support() + skin_, true);
+        positionsAtBuild_ = SubList<vector2D>(x, nFluid_);
+        listBuilt_ = skin_ > 0;
+        ++nListBuilds_;
+    }
+}
+
+
 void Foam::SPH::wcsph::computeRates()
 {
     using clock = std::chrono::steady_clock;
     const auto start = clock::now();
 
-    cloud_->updateCells();
-    nbrs_.build(cloud_->cells(), parts_.positions(), kernel_->support(), true);
+    updateNeighbours();
 
     const auto searched = clock::now();
     timeNeighbours_ += std::chrono::duration<scalar>(searched - start).count();
