@@ -4,10 +4,11 @@
 Description
     The sharp-crested weir tutorial as a user runs it, at H/dr = 24 (2304
     particles, to t = 1.6 s): one Allrun gives the discharge and nappe
-    figures and plots. At this resolution (measured: q 11 % above the
-    head-discharge formula, nappe RMS 4 % of the head) the bounds are wide;
-    the acceptance figures are those of the tutorial's own resolution, in
-    its README.
+    figures and plots. Measured at this resolution: at t = 1 s, the
+    paper's instant, head 0.223 m (paper 0.22) and q 7 % below the
+    head-discharge formula (4.7 % at the tutorial's H/dr = 48); averaged
+    over [1, 1.6] s, where the reservoir keeps draining, 12 % above; the
+    lower nappe within 4.3 % of the head (RMS) of eq. (16).
 
 \*---------------------------------------------------------------------------*/
 
@@ -29,9 +30,10 @@ TEST(weirTutorial, overflowMatchesTheHeadDischargeFormulaAndNappe)
 
     const auto table = sphTest::readKeyValues(dir/"weir.dat");
     ASSERT_TRUE(table.count("q_relative_difference")) << out;
-    // The paper's head at the quasi-steady state is 0.22 m
-    EXPECT_NEAR(std::stod(table.at("head_h0")), 0.21, 0.03);
-    EXPECT_LT(std::abs(std::stod(table.at("q_relative_difference"))), 0.15);
+    // The paper's head at the quasi-steady state (t = 1 s) is 0.22 m
+    EXPECT_NEAR(std::stod(table.at("head_h0_at_t0")), 0.22, 0.015);
+    EXPECT_LT(std::abs(std::stod(table.at("q_relative_difference_at_t0"))), 0.10);
+    EXPECT_LT(std::abs(std::stod(table.at("q_relative_difference"))), 0.20);
     EXPECT_GE(std::stoi(table.at("nappe_points")), 8);
     EXPECT_LT(std::stod(table.at("nappe_rms_error_over_h0")), 0.08);
 
