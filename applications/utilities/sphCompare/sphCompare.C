@@ -27,8 +27,10 @@ Usage
     -fv dir     the case of the source named fv (added if the dictionary
                 has none)
     -sph dir    the case of the source named sph (the same)
-    -time t     time of the SPH and FV results whose dictionaries name none
-                (a value or latestTime; default latestTime)
+    -time t     time of the result in the case itself (-case), unless its
+                dictionary names one (a value or latestTime; default
+                latestTime); the other results take their 'time' entry or
+                their latest time
 
 \*---------------------------------------------------------------------------*/
 
@@ -68,8 +70,8 @@ int main(int argc, char *argv[])
     (
         "time",
         "time",
-        "time of the results whose dictionaries name none"
-        " (a value or latestTime; default latestTime)"
+        "time of the result in the case itself, unless its dictionary names"
+        " one (a value or latestTime; default latestTime)"
     );
 
     #include "setRootCase.H"

@@ -22,6 +22,20 @@ namespace SPH
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- Do two paths name the same folder (once cleaned)?
+    bool sameFolder(Foam::fileName a, Foam::fileName b)
+    {
+        a.clean();
+        b.clean();
+        return a == b;
+    }
+}
+
+
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
 Foam::string Foam::SPH::sampleSource::expandedString(const string& s) const
@@ -137,7 +151,8 @@ void Foam::SPH::sampleSource::selectTime
     const options& opts
 ) const
 {
-    // The dictionary's 'time' (a value or latestTime), else the option's
+    // The dictionary's 'time' (a value or latestTime), else for a result in
+    // the comparison case itself the option's (-time), else the latest
     bool latest = true;
     scalar wanted = 0;
     if (dict_.found("time"))
@@ -156,7 +171,11 @@ void Foam::SPH::sampleSource::selectTime
                 << " latestTime" << nl << exit(FatalIOError);
         }
     }
-    else if (!opts.time.empty() && opts.time != "latestTime")
+    else if
+    (
+        !opts.time.empty() && opts.time != "latestTime"
+     && sameFolder(runTime.path(), opts.baseDir)
+    )
     {
         latest = false;
         if (!readScalar(opts.time, wanted))
