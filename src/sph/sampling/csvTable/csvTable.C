@@ -123,14 +123,25 @@ Foam::SPH::csvTable::csvTable(const fileName& file)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::string Foam::SPH::csvTable::namesLine() const
+{
+    string line;
+    for (const string& name : names_)
+    {
+        line += (line.empty() ? "" : " ") + name;
+    }
+    return line;
+}
+
+
 const Foam::scalarField& Foam::SPH::csvTable::column(const string& name) const
 {
     const auto iter = columns_.cfind(name);
     if (!iter.found())
     {
         FatalErrorInFunction
-            << "No column '" << name << "' in " << file_ << nl
-            << "Columns: " << names_ << nl
+            << "No column '" << name.c_str() << "' in " << file_ << nl
+            << "Columns: " << namesLine().c_str() << nl
             << exit(FatalError);
     }
     return *iter;

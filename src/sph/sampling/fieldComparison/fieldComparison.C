@@ -262,9 +262,9 @@ void Foam::SPH::fieldComparison::compareSet
             {
                 FatalIOErrorInFunction(dict)
                     << "Entry 'fields': source " << sources_[s].name()
-                    << " (" << sources_[s].type() << ", "
-                    << sources_[s].location() << ") has no field " << field
-                    << nl << exit(FatalIOError);
+                    << " (" << sources_[s].type() << ") has no field "
+                    << field << " in " << sources_[s].fieldsPath() << nl
+                    << exit(FatalIOError);
             }
             for (const word& ci : c)
             {

@@ -31,9 +31,10 @@ const Foam::scalarField& Foam::SPH::tableSource::column
     if (!table_->found(name))
     {
         FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "': no column '" << name << "' in "
+            << "Entry '" << key << "': no column '" << name.c_str() << "' in "
             << file_ << nl
-            << "Columns: " << table_->names() << nl << exit(FatalIOError);
+            << "Columns: " << table_->namesLine().c_str() << nl
+            << exit(FatalIOError);
     }
     return table_->column(name);
 }
