@@ -176,28 +176,14 @@ Foam::SPH::fieldComparison::setPoints(const dictionary& dict) const
 }
 
 
-void Foam::SPH::fieldComparison::compareSet
+Foam::labelList Foam::SPH::fieldComparison::setSources
 (
-    const word& setName,
-    const dictionary& dict
-)
+    const dictionary& dict,
+    const label owner
+) const
 {
-    const autoPtr<samplePoints> setPtr(setPoints(dict));
-    const samplePoints& set = *setPtr;
-    const List<vector2D>& points = set.points();
-    const label nPoints = set.size();
-    const bool ownPoints = set.type() == samplePoints::setType::sourcePoints;
-    const label owner =
-        (set.type() == samplePoints::setType::line
-      || set.type() == samplePoints::setType::points)
-      ? -1 : sourceOf(dict, "source");
-
-    Info<< nl << "Set " << setName << ": "
-        << samplePoints::setTypeNames[set.type()] << ", " << nPoints
-        << " points" << nl;
-
-    // The sources sampled: those listed, else all but the tables, which
-    // give values only on sets of their own rows
+    // Those listed, else all but the tables, which give values only on sets
+    // of their own rows
     labelList used;
     if (dict.found("sources"))
     {
@@ -223,39 +209,51 @@ void Foam::SPH::fieldComparison::compareSet
             }
         }
     }
+    return used;
+}
 
-    // The reference: the entry, else the table giving a table set's points
-    label ref = -1;
+
+Foam::label Foam::SPH::fieldComparison::setReference
+(
+    const dictionary& dict,
+    const setData& set
+) const
+{
+    // The entry, else the table giving a table set's points, else none
     if (dict.found("reference"))
     {
-        ref = sourceOf(dict, "reference");
-        if (!used.found(ref))
+        const label ref = sourceOf(dict, "reference");
+        if (!set.used.found(ref))
         {
             FatalIOErrorInFunction(dict)
                 << "Entry 'reference': source " << sources_[ref].name()
                 << " is not among the sources of the set" << nl
                 << exit(FatalIOError);
         }
+        return ref;
     }
-    else if (set.type() == samplePoints::setType::table)
-    {
-        ref = owner;
-    }
+    return set.points->type() == samplePoints::setType::table ? set.owner : -1;
+}
 
+
+void Foam::SPH::fieldComparison::setComponents
+(
+    const dictionary& dict,
+    setData& set
+) const
+{
     // Components of every field, in order of the fields, then the sources
-    const wordList fields(dict.get<wordList>("fields"));
-    if (fields.empty())
+    set.fields = dict.get<wordList>("fields");
+    if (set.fields.empty())
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'fields' is empty: name the fields to compare, e.g."
             << " fields (U p);" << nl << exit(FatalIOError);
     }
-    DynamicList<word> cmpts;
-    DynamicList<word> cmptField;
-    for (const word& field : fields)
+    for (const word& field : set.fields)
     {
         bool found = false;
-        for (const label s : used)
+        for (const label s : set.used)
         {
             const wordList c(sources_[s].components(field));
             if (c.empty() && sources_[s].complete())
@@ -269,10 +267,10 @@ void Foam::SPH::fieldComparison::compareSet
             for (const word& ci : c)
             {
                 found = true;
-                if (!cmpts.found(ci))
+                if (!set.components.found(ci))
                 {
-                    cmpts.append(ci);
-                    cmptField.append(field);
+                    set.components.append(ci);
+                    set.componentField.append(field);
                 }
             }
         }
@@ -283,14 +281,27 @@ void Foam::SPH::fieldComparison::compareSet
                 << nl << exit(FatalIOError);
         }
     }
+}
 
-    // Values: [source in used][component], NaN where a source has none
-    List<List<scalarField>> values(used.size());
-    forAll(used, u)
+
+void Foam::SPH::fieldComparison::sampleSet(setData& set) const
+{
+    // values[source in used][component], NaN where a source has none. On
+    // the points of a source, that source's own values (eq. (66)).
+    const bool ownPoints =
+        set.points->type() == samplePoints::setType::sourcePoints;
+    const label nPoints = set.points->size();
+
+    set.values.setSize(set.used.size());
+    forAll(set.used, u)
     {
-        const sampleSource& src = sources_[used[u]];
-        values[u].setSize(cmpts.size(), scalarField(nPoints, errorNorms::missing()));
-        for (const word& field : fields)
+        const sampleSource& src = sources_[set.used[u]];
+        set.values[u].setSize
+        (
+            set.components.size(),
+            scalarField(nPoints, errorNorms::missing())
+        );
+        for (const word& field : set.fields)
         {
             const wordList c(src.components(field));
             if (c.empty())
@@ -299,31 +310,47 @@ void Foam::SPH::fieldComparison::compareSet
             }
             const List<scalarField> v
             (
-                (ownPoints && used[u] == owner)
+                (ownPoints && set.used[u] == set.owner)
               ? src.ownValues(field)
-              : src.sample(field, points)
+              : src.sample(field, set.points->points())
             );
             forAll(c, k)
             {
-                values[u][cmpts.find(c[k])] = v[k];
+                set.values[u][set.components.find(c[k])] = v[k];
             }
         }
     }
 
     // Fields compared up to a constant: each source's mean removed
-    const wordList zeroMean(dict.getOrDefault<wordList>("zeroMean", wordList()));
-    forAll(cmpts, c)
+    forAll(set.components, c)
     {
-        if (zeroMean.found(cmptField[c]) || zeroMean.found(cmpts[c]))
+        if
+        (
+            set.zeroMean.found(set.componentField[c])
+         || set.zeroMean.found(set.components[c])
+        )
         {
-            forAll(used, u)
+            forAll(set.used, u)
             {
-                values[u][c] -= errorNorms::mean(values[u][c], set.weights());
+                set.values[u][c] -=
+                    errorNorms::mean(set.values[u][c], set.points->weights());
             }
         }
     }
+}
 
-    // Errors against the reference
+
+void Foam::SPH::fieldComparison::setErrors
+(
+    const dictionary& dict,
+    const setData& set
+)
+{
+    if (set.reference < 0)
+    {
+        return;
+    }
+
     const scalar errorScale = dict.getOrDefault<scalar>("errorScale", 1);
     if (errorScale <= 0)
     {
@@ -332,43 +359,52 @@ void Foam::SPH::fieldComparison::compareSet
             << " positive scale (u_max of eq. (66))" << nl
             << exit(FatalIOError);
     }
-    if (ref >= 0)
+
+    const word& refName = sources_[set.reference].name();
+    const label uRef = set.used.find(set.reference);
+    Info<< "    against " << refName << " (errors over " << errorScale
+        << "):" << nl
+        << ("    " + pad("component", 12) + pad("source", 12)
+          + pad("L2", 14) + pad("maxAbs", 14) + "points").c_str() << nl;
+
+    forAll(set.components, c)
     {
-        const label uRef = used.find(ref);
-        Info<< "    against " << sources_[ref].name() << " (errors over "
-            << errorScale << "):" << nl
-            << ("    " + pad("component", 12) + pad("source", 12)
-              + pad("L2", 14) + pad("maxAbs", 14) + "points").c_str() << nl;
-        forAll(cmpts, c)
+        forAll(set.used, u)
         {
-            const scalarField& r = values[uRef][c];
-            forAll(used, u)
-            {
-                if (u == uRef) continue;
-                const errorNorms::result e =
-                    errorNorms::compare(values[u][c], r, set.weights(), errorScale);
-                if (e.nPoints == 0) continue;
-                errors_.append
-                (
-                    errorRow{setName, cmpts[c], sources_[used[u]].name(),
-                        sources_[ref].name(), errorScale, e}
-                );
-                Info<< ("    " + pad(cmpts[c], 12)
-                      + pad(sources_[used[u]].name(), 12)
-                      + pad(num(e.L2, 6), 14) + pad(num(e.maxAbs, 6), 14)).c_str()
-                    << e.nPoints << nl;
-            }
+            if (u == uRef) continue;
+            const errorNorms::result e = errorNorms::compare
+            (
+                set.values[u][c],
+                set.values[uRef][c],
+                set.points->weights(),
+                errorScale
+            );
+            if (e.nPoints == 0) continue;
+
+            const word& name = sources_[set.used[u]].name();
+            errors_.append
+            (
+                errorRow{set.name, set.components[c], name, refName, errorScale, e}
+            );
+            Info<< ("    " + pad(set.components[c], 12) + pad(name, 12)
+                  + pad(num(e.L2, 6), 14) + pad(num(e.maxAbs, 6), 14)).c_str()
+                << e.nPoints << nl;
         }
     }
+}
 
-    // The set file
+
+void Foam::SPH::fieldComparison::writeSet(const setData& set) const
+{
+    const samplePoints& pts = *set.points;
     const fileName dir(outputDir());
     mkDir(dir);
-    OFstream os(dir/setName + ".dat");
-    os  << "# sphCompare set " << setName << " ("
-        << samplePoints::setTypeNames[set.type()] << ", " << nPoints
+    OFstream os(dir/set.name + ".dat");
+
+    os  << "# sphCompare set " << set.name << " ("
+        << samplePoints::setTypeNames[pts.type()] << ", " << pts.size()
         << " points) at time " << timeName_ << nl;
-    for (const label s : used)
+    for (const label s : set.used)
     {
         os  << "# source " << sources_[s].name() << ": " << sources_[s].type()
             << " " << sources_[s].location().c_str();
@@ -378,35 +414,64 @@ void Foam::SPH::fieldComparison::compareSet
         }
         os  << nl;
     }
-    if (!zeroMean.empty())
+    if (!set.zeroMean.empty())
     {
-        os  << "# zeroMean " << zeroMean << ": each source's mean over the set"
-            << " removed" << nl;
+        os  << "# zeroMean " << set.zeroMean << ": each source's mean over"
+            << " the set removed" << nl;
     }
+
     os  << "# distance x y weight";
-    for (const word& c : cmpts)
+    for (const word& c : set.components)
     {
-        for (const label s : used)
+        for (const label s : set.used)
         {
             os  << ' ' << c.c_str() << '_' << sources_[s].name().c_str();
         }
     }
     os  << nl;
-    for (label i = 0; i < nPoints; ++i)
+
+    for (label i = 0; i < pts.size(); ++i)
     {
-        os  << num(set.distance()[i]).c_str() << ' '
-            << num(points[i].x()).c_str() << ' '
-            << num(points[i].y()).c_str() << ' '
-            << num(set.weights()[i]).c_str();
-        forAll(cmpts, c)
+        os  << num(pts.distance()[i]).c_str() << ' '
+            << num(pts.points()[i].x()).c_str() << ' '
+            << num(pts.points()[i].y()).c_str() << ' '
+            << num(pts.weights()[i]).c_str();
+        forAll(set.components, c)
         {
-            forAll(used, u)
+            forAll(set.used, u)
             {
-                os  << ' ' << num(values[u][c][i]).c_str();
+                os  << ' ' << num(set.values[u][c][i]).c_str();
             }
         }
         os  << nl;
     }
+}
+
+
+void Foam::SPH::fieldComparison::compareSet
+(
+    const word& name,
+    const dictionary& dict
+)
+{
+    setData set;
+    set.name = name;
+    set.points = setPoints(dict);
+    const samplePoints::setType type = set.points->type();
+    set.owner =
+        (type == samplePoints::setType::line || type == samplePoints::setType::points)
+      ? -1 : sourceOf(dict, "source");
+
+    Info<< nl << "Set " << name << ": " << samplePoints::setTypeNames[type]
+        << ", " << set.points->size() << " points" << nl;
+
+    set.used = setSources(dict, set.owner);
+    set.reference = setReference(dict, set);
+    set.zeroMean = dict.getOrDefault<wordList>("zeroMean", wordList());
+    setComponents(dict, set);
+    sampleSet(set);
+    setErrors(dict, set);
+    writeSet(set);
 }
 
 

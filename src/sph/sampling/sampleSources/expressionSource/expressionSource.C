@@ -129,17 +129,7 @@ Foam::tmp<Foam::scalarField> Foam::SPH::expressionSource::evaluate
 
 Foam::wordList Foam::SPH::expressionSource::components(const word& field) const
 {
-    wordList result;
-    for (const word& c : names_)
-    {
-        word base;
-        direction cmpt;
-        if (c == field || (splitComponent(c, base, cmpt) && base == field))
-        {
-            result.append(c);
-        }
-    }
-    return result;
+    return namedComponents(names_, field);
 }
 
 

@@ -145,6 +145,26 @@ Foam::scalar Foam::SPH::sampleSource::scaleFactor(const word& field) const
 }
 
 
+Foam::wordList Foam::SPH::sampleSource::namedComponents
+(
+    const wordList& names,
+    const word& field
+)
+{
+    wordList result;
+    for (const word& c : names)
+    {
+        word base;
+        direction cmpt;
+        if (c == field || (splitComponent(c, base, cmpt) && base == field))
+        {
+            result.append(c);
+        }
+    }
+    return result;
+}
+
+
 void Foam::SPH::sampleSource::selectTime
 (
     Time& runTime,

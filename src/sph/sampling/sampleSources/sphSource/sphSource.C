@@ -292,21 +292,12 @@ Foam::SPH::sphSource::sphSource
 
 Foam::wordList Foam::SPH::sphSource::components(const word& field) const
 {
-    word base;
-    direction cmpt;
-    if (readField(field))
-    {
-        if (vectors_.found(field))
-        {
-            return wordList({field + "x", field + "y"});
-        }
-        return wordList({field});
-    }
-    if (splitComponent(field, base, cmpt) && readField(base) && vectors_.found(base))
-    {
-        return wordList({field});
-    }
-    return wordList();
+    return resultComponents
+    (
+        field,
+        [this](const word& f) { return readField(f); },
+        [this](const word& f) { return vectors_.found(f); }
+    );
 }
 
 

@@ -133,17 +133,7 @@ Foam::SPH::tableSource::tableSource
 
 Foam::wordList Foam::SPH::tableSource::components(const word& field) const
 {
-    wordList result;
-    for (const word& c : names_)
-    {
-        word base;
-        direction cmpt;
-        if (c == field || (splitComponent(c, base, cmpt) && base == field))
-        {
-            result.append(c);
-        }
-    }
-    return result;
+    return namedComponents(names_, field);
 }
 
 
