@@ -2,16 +2,19 @@
   sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
 -------------------------------------------------------------------------------
 Description
-    The MLS-linear SPH interpolation of sphCompare: a linear field is
-    reproduced exactly (to round-off) wherever three non-collinear particles
-    are within reach, inside, at walls and in corners, on a regular lattice
-    and on a disordered one; a smooth field converges at second order; a
-    collinear stencil falls back to the Shepard average and a point beyond
-    reach has no value.
+    The MLS SPH interpolation of sphCompare: with the linear basis a linear
+    field is reproduced exactly (to round-off) wherever three non-collinear
+    particles are within reach, inside, at walls and in corners, on a
+    regular lattice and on a disordered one, and a smooth field converges at
+    second order; with the quadratic basis quadratic fields are exact too
+    and a smooth field converges at third order. A stencil that cannot
+    determine a fit falls back to the order below (two rows of particles:
+    linear; one row: Shepard), and a point beyond reach has no value.
 
     "Exact" is to round-off: each value is a sum of ~50 terms whose weights
-    come from a 3 x 3 solve with a condition number below ~1e3 (measured on
-    these stencils), so 1e-11 absolute on values of O(10).
+    come from a 3 x 3 (6 x 6) solve with a condition number below ~1e3
+    (1e5), measured on these stencils, so 1e-11 (1e-10) absolute on values
+    of O(10).
 
 \*---------------------------------------------------------------------------*/
 
@@ -167,6 +170,104 @@ TEST(samplingMlsInterpolation, smoothFieldConvergesAtSecondOrder)
     const scalar e1 = maxError(20), e2 = maxError(40);
     EXPECT_GT(e1/e2, 3.0) << e1 << " " << e2;
     EXPECT_LT(e1/e2, 5.5) << e1 << " " << e2;
+}
+
+
+TEST(samplingMlsInterpolation, quadraticFitReproducesQuadraticFieldsExactly)
+{
+    sphTest::throwOnFatal();
+    const label n = 20;
+    const scalar quadOff = 1e-10;
+    auto q = [](const vector2D& p)
+    {
+        return 1 - p.x() + 2*p.y() + 3*p.x()*p.x() - 4*p.x()*p.y() + 0.5*p.y()*p.y();
+    };
+
+    for (const scalar jitter : {0.0, 0.3})
+    {
+        const List<vector2D> x(samplingTest::lattice(n, 1, jitter));
+        const autoPtr<kernel> W(wendland(1.0/n));
+        scalarField f(x.size());
+        forAll(x, i) f[i] = q(x[i]);
+
+        mlsInterpolation interp
+        (
+            x, scalarField(x.size(), 1.0), identity(x.size()), *W, 2
+        );
+        const List<vector2D> pts(probePoints());
+        const mlsInterpolation::stencils st = interp.weights(pts);
+        const scalarField fi(mlsInterpolation::interpolate<scalar>(st, f));
+        forAll(pts, i)
+        {
+            EXPECT_EQ(st.status[i], mlsInterpolation::pointStatus::quadratic)
+                << str(pts[i]) << " jitter " << jitter;
+            EXPECT_NEAR(fi[i], q(pts[i]), quadOff) << str(pts[i]) << " jitter " << jitter;
+        }
+    }
+}
+
+
+TEST(samplingMlsInterpolation, quadraticFitConvergesAtThirdOrder)
+{
+    sphTest::throwOnFatal();
+
+    // Halving dr (and h) divides the error of a quadratic fit by about 8
+    // (between 6 and 11 allows for the pre-asymptotic range)
+    auto maxError = [](const label n)
+    {
+        const List<vector2D> x(samplingTest::lattice(n, 1, 0.2));
+        const autoPtr<kernel> W(wendland(1.0/n));
+        scalarField f(x.size());
+        forAll(x, i) f[i] = std::sin(3*x[i].x())*std::cos(2*x[i].y());
+
+        mlsInterpolation interp
+        (
+            x, scalarField(x.size(), 1.0), identity(x.size()), *W, 2
+        );
+        const List<vector2D> pts(probePoints());
+        const scalarField fi
+        (
+            mlsInterpolation::interpolate<scalar>(interp.weights(pts), f)
+        );
+        scalar e = 0;
+        forAll(pts, i)
+        {
+            e = max(e, mag(fi[i] - std::sin(3*pts[i].x())*std::cos(2*pts[i].y())));
+        }
+        return e;
+    };
+
+    const scalar e1 = maxError(20), e2 = maxError(40);
+    EXPECT_GT(e1/e2, 6.0) << e1 << " " << e2;
+    EXPECT_LT(e1/e2, 11.0) << e1 << " " << e2;
+}
+
+
+TEST(samplingMlsInterpolation, twoRowsOfParticlesFallBackFromQuadraticToLinear)
+{
+    sphTest::throwOnFatal();
+    const scalar dr = 0.05;
+    const autoPtr<kernel> W(wendland(dr));
+
+    // Two rows: a quadratic in y is not determined, a linear fit is
+    List<vector2D> x(40);
+    scalarField f(40);
+    forAll(x, i)
+    {
+        x[i] = vector2D((i % 20 + 0.5)*dr, 0.5 + (i/20)*dr);
+        f[i] = samplingTest::linear(x[i]);
+    }
+
+    mlsInterpolation interp(x, scalarField(x.size(), 1.0), identity(x.size()), *W, 2);
+    const List<vector2D> pts({vector2D(0.5, 0.52)});
+    const mlsInterpolation::stencils st = interp.weights(pts);
+    EXPECT_EQ(st.status[0], mlsInterpolation::pointStatus::linear);
+    EXPECT_NEAR
+    (
+        mlsInterpolation::interpolate<scalar>(st, f)()[0],
+        samplingTest::linear(pts[0]),
+        roundOff
+    );
 }
 
 

@@ -10,10 +10,78 @@
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-// Three non-collinear particles give a moment matrix whose reciprocal
-// condition number is O(1e-2) or more in units of h; 1e-8 only rejects
-// (nearly) collinear stencils, where the slope across them is undefined
+// A stencil that determines the fit gives a moment matrix whose reciprocal
+// condition number is O(1e-3) or more in units of h (a quadratic fit in a
+// corner); 1e-8 only rejects stencils where the fit is undetermined (too few
+// particles, or all on a line)
 const Foam::scalar Foam::SPH::mlsInterpolation::defaultMinRcond = 1e-8;
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- The basis p(d) of size N: (1, dx, dy[, dx^2, dx dy, dy^2])
+    template<int N>
+    Eigen::Matrix<double, N, 1> basis(const Foam::vector2D& d)
+    {
+        Eigen::Matrix<double, N, 1> p;
+        p(0) = 1;
+        p(1) = d.x();
+        p(2) = d.y();
+        if constexpr (N == 6)
+        {
+            p(3) = d.x()*d.x();
+            p(4) = d.x()*d.y();
+            p(5) = d.y()*d.y();
+        }
+        return p;
+    }
+
+    //- MLS weights psi_b = w_b p(d_b).M^-1 e0 with a basis of size N;
+    //- false (psi untouched) if the fit is undetermined
+    template<int N>
+    bool fitWeights
+    (
+        const Foam::UList<Foam::vector2D>& d,
+        const Foam::UList<Foam::scalar>& w,
+        const Foam::scalar minRcond,
+        Foam::List<Foam::scalar>& psi
+    )
+    {
+        if (d.size() < N)
+        {
+            return false;
+        }
+
+        using matrix = Eigen::Matrix<double, N, N>;
+        matrix M(matrix::Zero());
+        forAll(d, k)
+        {
+            const Eigen::Matrix<double, N, 1> p(basis<N>(d[k]));
+            M += w[k]*p*p.transpose();
+        }
+
+        const Eigen::SelfAdjointEigenSolver<matrix> eig(M);
+        const auto& lambda = eig.eigenvalues();         // ascending
+        if (!(lambda(0) > minRcond*lambda(N - 1)))
+        {
+            return false;
+        }
+
+        // c = M^-1 e0 = V diag(1/lambda) V^T e0
+        const matrix& V = eig.eigenvectors();
+        const Eigen::Matrix<double, N, 1> c =
+            V*(V.row(0).transpose().cwiseQuotient(lambda));
+
+        psi.setSize(d.size());
+        forAll(d, k)
+        {
+            psi[k] = w[k]*basis<N>(d[k]).dot(c);
+        }
+        return true;
+    }
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -24,6 +92,7 @@ Foam::SPH::mlsInterpolation::mlsInterpolation
     const scalarField& volumes,
     const labelUList& used,
     const kernel& W,
+    const label order,
     const scalar minRcond
 )
 :
@@ -31,8 +100,16 @@ Foam::SPH::mlsInterpolation::mlsInterpolation
     used_(used),
     points_(used.size()),
     volumes_(used.size()),
+    order_(order),
     minRcond_(minRcond)
 {
+    if (order_ != 1 && order_ != 2)
+    {
+        FatalErrorInFunction
+            << "MLS order " << order_ << ": 1 (linear) or 2 (quadratic)"
+            << nl << exit(FatalError);
+    }
+
     vector2D lo(vector2D::one*GREAT), hi(-vector2D::one*GREAT);
     forAll(used_, k)
     {
@@ -82,6 +159,7 @@ Foam::SPH::mlsInterpolation::weights(const UList<vector2D>& points) const
     DynamicList<label> nbr;
     DynamicList<scalar> w;
     DynamicList<vector2D> d;
+    List<scalar> psi;
 
     const scalar h = W_.h();
 
@@ -118,44 +196,31 @@ Foam::SPH::mlsInterpolation::weights(const UList<vector2D>& points) const
                 continue;
             }
 
-            // Moment matrix M = sum_b w_b p_b p_b^T, p_b = (1, d_b)
-            Eigen::Matrix3d M(Eigen::Matrix3d::Zero());
-            forAll(nbr, k)
+            // The highest order the stencil determines, down to Shepard
+            if (order_ == 2 && fitWeights<6>(d, w, minRcond_, psi))
             {
-                const Eigen::Vector3d p(1, d[k].x(), d[k].y());
-                M += w[k]*p*p.transpose();
+                st.status[i] = pointStatus::quadratic;
             }
-
-            Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-            eig.computeDirect(M);
-            const Eigen::Vector3d& lambda = eig.eigenvalues();   // ascending
-            const bool linear =
-                nbr.size() >= 3 && lambda(0) > minRcond_*lambda(2);
-
-            if (linear)
+            else if (fitWeights<3>(d, w, minRcond_, psi))
             {
-                // c = M^-1 e0; psi_b = w_b p_b.c
-                const Eigen::Matrix3d& V = eig.eigenvectors();
-                const Eigen::Vector3d c =
-                    V*(V.row(0).transpose().cwiseQuotient(lambda));
-                forAll(nbr, k)
-                {
-                    indices.append(used_[nbr[k]]);
-                    weights.append(w[k]*(c(0) + c(1)*d[k].x() + c(2)*d[k].y()));
-                }
                 st.status[i] = pointStatus::linear;
             }
             else
             {
-                // Shepard: w_b/sum w
                 scalar sumW = 0;
                 for (const scalar wk : w) sumW += wk;
-                forAll(nbr, k)
+                psi.setSize(w.size());
+                forAll(w, k)
                 {
-                    indices.append(used_[nbr[k]]);
-                    weights.append(w[k]/sumW);
+                    psi[k] = w[k]/sumW;
                 }
                 st.status[i] = pointStatus::constant;
+            }
+
+            forAll(nbr, k)
+            {
+                indices.append(used_[nbr[k]]);
+                weights.append(psi[k]);
             }
         }
     });

@@ -205,7 +205,17 @@ void Foam::SPH::sphSource::makeInterpolation()
         kernel_ = kernel::New(schemes, dr);
     }
 
-    interp_.reset(new mlsInterpolation(positions_, volumes_, used_, *kernel_));
+    const label order = dict_.getOrDefault<label>("interpolationOrder", 2);
+    if (order != 1 && order != 2)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'interpolationOrder' is " << order << "; expected 1"
+            << " (MLS-linear) or 2 (MLS-quadratic)" << nl << exit(FatalIOError);
+    }
+    interp_.reset
+    (
+        new mlsInterpolation(positions_, volumes_, used_, *kernel_, order)
+    );
 }
 
 
@@ -284,7 +294,8 @@ Foam::SPH::sphSource::sphSource
 
     Info<< "    SPH case " << caseDir_ << ", time " << runTime_->timeName()
         << ": " << positions_.size() << " particles, " << used_.size()
-        << " taking part" << nl;
+        << " taking part; MLS interpolation of order " << interp_->order()
+        << nl;
 }
 
 
@@ -313,16 +324,18 @@ Foam::List<Foam::scalarField> Foam::SPH::sphSource::sample
         lastStencils_ = interp_->weights(points);
         lastPoints_ = points;
 
-        const label nConstant =
-            lastStencils_.count(mlsInterpolation::pointStatus::constant);
-        const label nNone =
-            lastStencils_.count(mlsInterpolation::pointStatus::none);
-        if (nConstant || nNone)
+        typedef mlsInterpolation::pointStatus status;
+        const label nLinear =
+            interp_->order() == 2 ? lastStencils_.count(status::linear) : 0;
+        const label nConstant = lastStencils_.count(status::constant);
+        const label nNone = lastStencils_.count(status::none);
+        if (nLinear || nConstant || nNone)
         {
             Info<< "    " << name_ << ": of " << points.size() << " points, "
-                << nConstant << " with too few particles for the linear fit"
-                << " (Shepard average instead), " << nNone
-                << " with no particle within reach (no value)" << nl;
+                << nLinear << " with a linear fit (too few particles for the"
+                << " quadratic), " << nConstant << " with a Shepard average"
+                << " (too few for the linear), " << nNone << " with no"
+                << " particle within reach (no value)" << nl;
         }
     }
 
