@@ -42,8 +42,6 @@ Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
         return n;
     }
 
-    // Layer k sits (k + 1/2) dr outside the wall and the first fluid
-    // particle dr/2 inside it: enough layers to fill its kernel support
     IOdictionary schemes
     (
         IOobject
@@ -56,6 +54,18 @@ Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
             false
         )
     );
+
+    // USAW walls (000_8c7cd3aabddcf18a.txt) are the vertices and segments
+    // alone: no particle behind them
+    if (schemes.getOrDefault<word>("boundaryMethod", word::null) == "usaw")
+    {
+        Info<< "No dummy particles: boundaryMethod usaw in system/sphSchemes"
+            << nl;
+        return 0;
+    }
+
+    // Layer k sits (k + 1/2) dr outside the wall and the first fluid
+    // particle dr/2 inside it: enough layers to fill its kernel support
     const autoPtr<kernel> k(kernel::New(schemes, dr_));
     return max(label(1), label(std::floor(k->support()/dr_ + 1e-9)));
 }

@@ -1,0 +1,287 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    The pressure Poisson equation of ISPH-USAW, 000_8c7cd3aabddcf18a.txt
+    eqs. (40)-(44), for A = p - rho g.x (eq. (41): the Laplacian of p and
+    of A agree, and A is uniform in a fluid at rest):
+
+        2/gamma_a sum_b V_b (A_a - A_b)/r_ab^2 r_ab . grad w_ab
+      = rho/dt D_a{u**} + 2/gamma_a sum_s dA/dn_s |grad gamma_as|
+
+    with dA/dn_s = rho (u_w^n - u_w^{n+1}).n_s/dt, eq. (43) for the vertex
+    particles' u* = u_w^n + dt g (45). Row a of the matrix is minus this
+    equation, so that the diagonal is positive:
+
+        sum_b c_ab (A_a - A_b) = b_a,   c_ab = -2 V_b (dW/dr/r)_ab/gamma_a >= 0
+
+    Free-surface fluid particles (and isolated ones) have p = 0, i.e.
+    A = -rho g.x: an identity row, and the value moved to the right-hand
+    side of the others. Vertex particles at or above the free surface, or
+    out of the fluid's reach, have rows without sources instead: their A is
+    the mean of their neighbours', the pressure continued (linearly at
+    rest), so the wall terms by the contact line see no kink to 0 along the
+    dry wall.
+
+\*---------------------------------------------------------------------------*/
+
+#include "isph.H"
+#include "Time.H"
+#include "usawOperators.H"
+#include "kernelDispatch.H"
+
+#include <algorithm>
+#include <chrono>
+#include <utility>
+#include <vector>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Kernel>
+void Foam::SPH::isph::assemblePressure(const Kernel& K, const scalar dt)
+{
+    const label n = parts_.size();
+    const label nF = nFluid_;
+    const label* off = nbrs_.offsets().cdata();
+    const label* nbr = nbrs_.indices().cdata();
+    const scalar* r = nbrs_.r().cdata();
+    const scalar* gamma = usaw_->gamma().cdata();
+    const label* wOff = usaw_->offsets().cdata();
+    const label* seg = usaw_->segments().cdata();
+    const vector2D* gradGammaAs = usaw_->gradGammaAs().cdata();
+    const vector2D* x = parts_.positions().cdata();
+    const scalar* V = V_.cdata();
+    const scalar* divU = divU_.cdata();
+    const scalar* dAdn = dAdn_.cdata();
+    const label* surface = surface_.cdata();
+    label* kind = rowKind_.data();
+    const scalar diagFactor = freeSurface_ ? 1 : 1 + diagonalReinforcement_;
+    const scalar rho = rho0_;
+    const vector2D g = g_;
+    const scalar dr2 = sqr(dr_);
+
+    // Kind of each row: a fluid particle at the free surface, or one no
+    // other fluid particle reaches, has p = 0 (Dirichlet); a vertex
+    // particle at or above the free surface, or one no fluid particle
+    // reaches, is an extension row: its A is the mean of its neighbours'
+    // (fluid and vertex alike, as if of volume dr^2), the pressure
+    // continued, which its segments carry into the wall terms of the fluid
+    // particles by the contact line; a dry one is tied weakly (1e-6) to
+    // p = 0, so that a wall no fluid reaches keeps a solvable row
+    enum rowKind : label { equation = 0, dirichlet = 1, extension = 2, dry = 3 };
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        bool reached = false;
+        for (label k = off[i]; k < off[i + 1] && !reached; ++k)
+        {
+            reached = V[nbr[k]] > 0 && K.dWdrByR(r[k]) < 0;
+        }
+        if (i < nF)
+        {
+            kind[i] = (surface[i] || !reached) ? dirichlet : equation;
+        }
+        else
+        {
+            kind[i] = !reached ? dry : surface[i] ? extension : equation;
+        }
+    }
+
+    // Weight of neighbour j in row i
+    auto volume = [&](const label i, const label j)
+    {
+        return kind[i] >= extension ? dr2 : V[j];
+    };
+
+    // Row sizes: the diagonal and the unknown neighbours
+    A_.resize(n, n);
+    int* start = A_.outerIndexPtr();
+    start[0] = 0;
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        int size = 1;
+        if (kind[i] != dirichlet)
+        {
+            for (label k = off[i]; k < off[i + 1]; ++k)
+            {
+                const label j = nbr[k];
+                size += (volume(i, j) > 0 && kind[j] != dirichlet);
+            }
+        }
+        start[i + 1] = size;
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        start[i + 1] += start[i];
+    }
+    A_.resizeNonZeros(start[n]);
+    int* col = A_.innerIndexPtr();
+    scalar* val = A_.valuePtr();
+    b_.resize(n);
+
+    #pragma omp parallel
+    {
+        std::vector<std::pair<int, scalar>> row;
+
+        #pragma omp for schedule(static)
+        for (label i = 0; i < n; ++i)
+        {
+            row.clear();
+            const scalar ADirichlet = -rho*(g & x[i]);
+            if (kind[i] == dirichlet)
+            {
+                row.emplace_back(i, 1);
+                b_[i] = ADirichlet;
+            }
+            else
+            {
+                const bool sources = kind[i] == equation;
+                const scalar twoByGamma = 2/gamma[i];
+                scalar diag = 0;
+                scalar bi = sources ? -rho/dt*divU[i] : 0;
+                for (label k = off[i]; k < off[i + 1]; ++k)
+                {
+                    const label j = nbr[k];
+                    const scalar Vj = volume(i, j);
+                    if (Vj == 0) continue;
+                    const scalar c = -twoByGamma*Vj*K.dWdrByR(r[k]);
+                    diag += c;
+                    if (kind[j] == dirichlet)
+                    {
+                        bi -= c*rho*(g & x[j]);
+                    }
+                    else
+                    {
+                        row.emplace_back(j, -c);
+                    }
+                }
+                for (label k = wOff[i]; k < wOff[i + 1] && sources; ++k)
+                {
+                    bi -= twoByGamma*dAdn[seg[k]]*mag(gradGammaAs[k]);
+                }
+                if (kind[i] == dry)
+                {
+                    bi += 1e-6*diag*ADirichlet;
+                    diag *= 1 + 1e-6;
+                }
+                row.emplace_back(i, diagFactor*diag);
+                b_[i] = bi;
+            }
+
+            // Eigen's compressed rows hold their columns in ascending order
+            std::sort(row.begin(), row.end());
+            int k = start[i];
+            for (const auto& entry : row)
+            {
+                col[k] = entry.first;
+                val[k] = entry.second;
+                ++k;
+            }
+        }
+    }
+}
+
+
+void Foam::SPH::isph::makeCompatible()
+{
+    // Without a Dirichlet row the fluid rows hold A only through
+    // differences: sum_a V_a gamma_a (row a) = 0 for any A (the pair sums
+    // are antisymmetric), so only a right-hand side with
+    // sum_a V_a gamma_a b_a = 0 has a solution
+    const scalar* gamma = usaw_->gamma().cdata();
+    scalar sumW = 0, sumWB = 0;
+    for (label i = 0; i < nFluid_; ++i)
+    {
+        const scalar w = V_[i]*gamma[i];
+        sumW += w;
+        sumWB += w*b_[i];
+    }
+    const scalar mean = sumWB/sumW;
+    for (label i = 0; i < nFluid_; ++i)
+    {
+        b_[i] -= mean;
+    }
+}
+
+
+void Foam::SPH::isph::solvePressure
+(
+    const scalar dt,
+    const scalar tOld,
+    const scalar tNew
+)
+{
+    const auto start = now();
+
+    // Wall condition (43) for A: the wall's acceleration along its normal
+    const label nSegments = dAdn_.size();
+    if (motion_->any())
+    {
+        motion_->vertices(tNew, wallX_, wallU_);
+        const vector2DField& U = parts_.field<vector2D>("U");
+        const List<labelPair>& ends = usaw_->segmentParticles();
+        const List<vector2D>& normal = usaw_->segmentNormals();
+        for (label s = 0; s < nSegments; ++s)
+        {
+            const label v1 = ends[s].first();
+            const label v2 = ends[s].second();
+            const vector2D uOld(0.5*(U[v1] + U[v2]));
+            const vector2D uNew(0.5*(wallU_[v1 - nFluid_] + wallU_[v2 - nFluid_]));
+            dAdn_[s] = rho0_*((uOld - uNew) & normal[s])/dt;
+        }
+    }
+
+    dispatch(*kernel_, [&](const auto& K)
+    {
+        usaw::div(K, nbrs_, *usaw_, V_, Ustar_, divU_);
+    });
+    times_.operators += secondsSince(start);
+
+    const auto assemblyStart = now();
+    dispatch(*kernel_, [&](const auto& K)
+    {
+        assemblePressure(K, dt);
+    });
+    if (!freeSurface_)
+    {
+        makeCompatible();
+    }
+
+    // Warm start from the last pressure
+    const label n = parts_.size();
+    scalarField& p = parts_.field<scalar>("p");
+    const vector2DField& x = parts_.positions();
+    xA_.resize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        xA_[i] = p[i] - rho0_*(g_ & x[i]);
+    }
+    times_.assembly += secondsSince(assemblyStart);
+
+    const auto solveStart = now();
+    lastSolve_ = pSolver_->solve(A_, b_, xA_);
+    times_.solve += secondsSince(solveStart);
+
+    for (label i = 0; i < n; ++i)
+    {
+        p[i] = xA_[i] + rho0_*(g_ & x[i]);
+    }
+    if (!freeSurface_)
+    {
+        // The level of a confined flow's pressure: its mean over the fluid
+        scalar mean = 0;
+        for (label i = 0; i < nFluid_; ++i)
+        {
+            mean += p[i];
+        }
+        mean /= nFluid_;
+        for (label i = 0; i < n; ++i)
+        {
+            p[i] += pRefValue_ - mean;
+        }
+    }
+}
+
+
+// ************************************************************************* //
