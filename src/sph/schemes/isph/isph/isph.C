@@ -12,6 +12,7 @@
 #include "vtkWallFile.H"
 #include "usawOperators.H"
 #include "kernelDispatch.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -87,7 +88,7 @@ void Foam::SPH::isph::readSchemes()
     boundaryMethodNames.get("boundaryMethod", schemes_);
     pressureGradient_ = pressureGradientTypeNames.getOrDefault
     (
-        "pressureGradient", schemes_, pressureGradientType::antisymmetric
+        "pressureGradient", schemes_, pressureGradientType::renormalised
     );
 
     shifting_ = schemes_.getOrDefault<bool>("shifting", true);
@@ -249,6 +250,9 @@ void Foam::SPH::isph::initialise()
         initialiseFromSphMesh();
     }
 
+    // Density is rho everywhere (function objects read V_b = m/rho_b)
+    parts_.add<scalar>("rho", rho0_, false);
+
     Info<< "Particles: " << nFluid_ << " fluid, " << nVertices
         << " wall vertices" << nl << endl;
 }
@@ -331,7 +335,7 @@ Foam::SPH::isph::isph(Time& runTime)
         )
     ),
     rho0_(0), nu_(0), g_(vector2D::zero),
-    pressureGradient_(pressureGradientType::antisymmetric),
+    pressureGradient_(pressureGradientType::renormalised),
     shifting_(true), shiftCoeff_(0.7), freeSurfaceDivR_(1.5),
     minDeltaTFraction_(1e-3), stopIfNotConverged_(true),
     diagonalReinforcement_(1e-6), pRefValue_(0), CCFL_(0.2),
@@ -389,10 +393,13 @@ Foam::SPH::isph::isph(Time& runTime)
     }
 
     const label n = parts_.size();
-    V_.setSize(n, 0);
-    for (label i = 0; i < nFluid_; ++i)
+    // Vertex particles are fluid particles cut by the wall (000_...
+    // section 2): the share theta_v/(2 pi) of a particle's volume, so that
+    // with the first row dr from the wall the volumes tile the fluid
+    V_.setSize(n, dr_*dr_);
+    forAll(walls_->pointAngles(), v)
     {
-        V_[i] = dr_*dr_;
+        V_[nFluid_ + v] *= walls_->pointAngles()[v]/constant::mathematical::twoPi;
     }
     Ustar_.setSize(n);
     visc_.setSize(n);
@@ -401,7 +408,16 @@ Foam::SPH::isph::isph(Time& runTime)
     surface_.setSize(n, 0);
     nearSurface_.setSize(n, 0);
     rowKind_.setSize(n, 0);
+    copyFrom_.setSize(n, -1);
+    vertexNeighbours_.setSize(walls_->points().size());
+    for (const labelPair& e : walls_->segments())
+    {
+        vertexNeighbours_[e.first()].append(e.second());
+        vertexNeighbours_[e.second()].append(e.first());
+    }
     gradP_.setSize(n);
+    R_.setSize(n, tensor2D::I);
+    rows_.resize(n);
     gradC_.setSize(n);
     gradU_.setSize(n);
     wallU_.setSize(walls_->points().size());
@@ -440,7 +456,7 @@ void Foam::SPH::isph::printStages() const
         << " grad gamma_as (6) of " << walls_->segments().size()
         << " segments" << nl
         << "    viscous prediction  eqs. (15)-(17), (31): nu " << nu_
-        << (nu_ > 0 ? "" : " (none)") << ", wall distance floor dr/2" << nl;
+        << (nu_ > 0 ? "" : " (none)") << nl;
     if (freeSurface_)
     {
         Info<< "    free surface        D{r} <= " << freeSurfaceDivR_
@@ -481,6 +497,7 @@ void Foam::SPH::isph::printStages() const
         << minDeltaTFraction_ << " of the first" << nl
         << "    time step           eqs. (48)-(49): C_CFL (maxCo) " << CCFL_
         << ", C_visq " << Cvisc_ << ", C_force " << Cforce_
+        << (freeSurface_ ? " with |du/dt| >= |g|" : "")
         << (adjust ? "" : " (adjustTimeStep off: deltaT fixed)") << nl << endl;
 }
 
@@ -497,7 +514,10 @@ Foam::scalar Foam::SPH::isph::stableDeltaT() const
         uMax2 = max(uMax2, magSqr(u));
     }
 
-    // Eqs. (48)-(49); the acceleration of the last step, or gravity
+    // Eqs. (48)-(49) with the acceleration of the last step (gravity
+    // before the first). A free surface adds at least |g|: still water
+    // has no acceleration, but a ripple of a few dr on its surface turns
+    // at sqrt(g pi/dr), which an explicit step must follow
     scalar dt = VGREAT;
     if (uMax2 > 0)
     {
@@ -507,7 +527,8 @@ Foam::scalar Foam::SPH::isph::stableDeltaT() const
     {
         dt = min(dt, Cvisc_*h*h/nu_);
     }
-    const scalar accel = maxAccel_ > 0 ? maxAccel_ : mag(g_);
+    const scalar accel =
+        (freeSurface_ || maxAccel_ == 0) ? max(maxAccel_, mag(g_)) : maxAccel_;
     if (accel > 0)
     {
         dt = min(dt, Cforce_*std::sqrt(h/accel));

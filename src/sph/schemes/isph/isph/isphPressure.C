@@ -17,11 +17,12 @@ Description
 
     Free-surface fluid particles (and isolated ones) have p = 0, i.e.
     A = -rho g.x: an identity row, and the value moved to the right-hand
-    side of the others. Vertex particles at or above the free surface, or
-    out of the fluid's reach, have rows without sources instead: their A is
-    the mean of their neighbours', the pressure continued (linearly at
-    rest), so the wall terms by the contact line see no kink to 0 along the
-    dry wall.
+    side of the others. Vertex particles at or above the free surface have
+    rows without sources instead: their A is the mean of their neighbours',
+    the pressure continued (uniform A at rest), and those out of the
+    fluid's reach copy the A of a reached neighbour along the wall, so the
+    wall terms by the contact line see no kink to p = 0 along the dry
+    wall.
 
 \*---------------------------------------------------------------------------*/
 
@@ -31,9 +32,6 @@ Description
 #include "kernelDispatch.H"
 
 #include <algorithm>
-#include <chrono>
-#include <utility>
-#include <vector>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -44,38 +42,46 @@ void Foam::SPH::isph::assemblePressure(const Kernel& K, const scalar dt)
     const label nF = nFluid_;
     const label* off = nbrs_.offsets().cdata();
     const label* nbr = nbrs_.indices().cdata();
+    const vector2D* rij = nbrs_.rij().cdata();
     const scalar* r = nbrs_.r().cdata();
     const scalar* gamma = usaw_->gamma().cdata();
+    const vector2D* gradGamma = usaw_->gradGamma().cdata();
     const label* wOff = usaw_->offsets().cdata();
     const label* seg = usaw_->segments().cdata();
     const vector2D* gradGammaAs = usaw_->gradGammaAs().cdata();
+    const labelPair* ends = usaw_->segmentParticles().cdata();
     const vector2D* x = parts_.positions().cdata();
     const scalar* V = V_.cdata();
     const scalar* divU = divU_.cdata();
     const scalar* dAdn = dAdn_.cdata();
     const label* surface = surface_.cdata();
+    const tensor2D* R = R_.cdata();
     label* kind = rowKind_.data();
+    const bool ownGradient = pressureGradient_ == pressureGradientType::renormalised;
     const scalar diagFactor = freeSurface_ ? 1 : 1 + diagonalReinforcement_;
     const scalar rho = rho0_;
     const vector2D g = g_;
-    const scalar dr2 = sqr(dr_);
 
     // Kind of each row: a fluid particle at the free surface, or one no
     // other fluid particle reaches, has p = 0 (Dirichlet); a vertex
-    // particle at or above the free surface, or one no fluid particle
-    // reaches, is an extension row: its A is the mean of its neighbours'
-    // (fluid and vertex alike, as if of volume dr^2), the pressure
-    // continued, which its segments carry into the wall terms of the fluid
-    // particles by the contact line; a dry one is tied weakly (1e-6) to
-    // p = 0, so that a wall no fluid reaches keeps a solvable row
-    enum rowKind : label { equation = 0, dirichlet = 1, extension = 2, dry = 3 };
+    // particle at or above the free surface is an extension row: its A is
+    // the mean of its neighbours', the pressure continued, which the wall
+    // terms of the fluid particles by the contact line see; a vertex no
+    // fluid particle reaches (dry) matters only through the segments it
+    // shares with reached vertices, and copies the A of such a neighbour
+    // along the wall (else p = 0)
+    enum rowKind : label
+    {
+        equation = 0, dirichlet = 1, extension = 2, copy = 3
+    };
+    labelList& copyFrom = copyFrom_;
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)
     {
         bool reached = false;
         for (label k = off[i]; k < off[i + 1] && !reached; ++k)
         {
-            reached = V[nbr[k]] > 0 && K.dWdrByR(r[k]) < 0;
+            reached = nbr[k] < nF && K.dWdrByR(r[k]) < 0;
         }
         if (i < nF)
         {
@@ -83,101 +89,148 @@ void Foam::SPH::isph::assemblePressure(const Kernel& K, const scalar dt)
         }
         else
         {
-            kind[i] = !reached ? dry : surface[i] ? extension : equation;
+            kind[i] = !reached ? copy : surface[i] ? extension : equation;
+        }
+    }
+    for (label i = nF; i < n; ++i)
+    {
+        if (kind[i] != copy) continue;
+        copyFrom[i] = -1;
+        for (const label v : vertexNeighbours_[i - nF])
+        {
+            if (kind[nF + v] == equation || kind[nF + v] == extension)
+            {
+                copyFrom[i] = nF + v;
+                break;
+            }
+        }
+        if (copyFrom[i] < 0)
+        {
+            kind[i] = dirichlet;
         }
     }
 
-    // Weight of neighbour j in row i
-    auto volume = [&](const label i, const label j)
-    {
-        return kind[i] >= extension ? dr2 : V[j];
-    };
-
-    // Row sizes: the diagonal and the unknown neighbours
-    A_.resize(n, n);
-    int* start = A_.outerIndexPtr();
-    start[0] = 0;
+    // Each row as (column, coefficient) pairs; a Dirichlet neighbour's
+    // term goes to the right-hand side
+    b_.resize(n);
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        int size = 1;
-        if (kind[i] != dirichlet)
+        std::vector<std::pair<int, scalar>>& row = rows_[i];
+        row.clear();
+        if (kind[i] == dirichlet)
         {
-            for (label k = off[i]; k < off[i + 1]; ++k)
+            row.emplace_back(i, 1);
+            b_[i] = -rho*(g & x[i]);
+            continue;
+        }
+        if (kind[i] == copy)
+        {
+            row.emplace_back(i, 1);
+            row.emplace_back(copyFrom[i], -1);
+            std::sort(row.begin(), row.end());
+            b_[i] = 0;
+            continue;
+        }
+
+        scalar diag = 0;
+        scalar bi = 0;
+        auto add = [&](const label j, const scalar c)
+        {
+            // c (A_i - A_j)
+            diag += c;
+            if (kind[j] == dirichlet)
             {
-                const label j = nbr[k];
-                size += (volume(i, j) > 0 && kind[j] != dirichlet);
+                bi -= c*rho*(g & x[j]);
+            }
+            else
+            {
+                row.emplace_back(j, -c);
+            }
+        };
+
+        const scalar invGamma = 1/gamma[i];
+        const bool sources = kind[i] == equation;
+        // An extension row averages over the fluid and the reached vertices
+        for (label k = off[i]; k < off[i + 1]; ++k)
+        {
+            const label j = nbr[k];
+            if (sources || j < nF || kind[j] == equation || kind[j] == extension)
+            {
+                add(j, -2*invGamma*V[j]*K.dWdrByR(r[k]));
             }
         }
-        start[i + 1] = size;
+
+        if (sources)
+        {
+            bi -= rho/dt*divU[i];
+
+            // The fluid particle's own normal gradient, eq. (10) as printed:
+            // (grad A)_a . grad gamma_a/gamma_a with (grad A)_a = R G-{A},
+            // the gradient of the projection; eq. (40) doubles the wall's
+            // instead, and cannot stop a particle driven into the wall
+            const bool own = ownGradient && i < nF;
+            if (own)
+            {
+                const vector2D q(invGamma*(R[i].T() & gradGamma[i]));
+                for (label k = off[i]; k < off[i + 1]; ++k)
+                {
+                    const label j = nbr[k];
+                    add(j, -invGamma*V[j]*(K.gradW(rij[k], r[k]) & q));
+                }
+                for (label k = wOff[i]; k < wOff[i + 1]; ++k)
+                {
+                    const scalar f = invGamma*(gradGammaAs[k] & q);
+                    add(ends[seg[k]].first(), 0.5*f);
+                    add(ends[seg[k]].second(), 0.5*f);
+                }
+            }
+            const scalar wallFactor = own ? 1 : 2;
+            for (label k = wOff[i]; k < wOff[i + 1]; ++k)
+            {
+                bi -= wallFactor*invGamma*dAdn[seg[k]]*mag(gradGammaAs[k]);
+            }
+        }
+        row.emplace_back(i, diagFactor*diag);
+        b_[i] = bi;
+
+        // Eigen's compressed rows hold each column once, in ascending order
+        std::sort(row.begin(), row.end());
+        std::size_t last = 0;
+        for (std::size_t k = 1; k < row.size(); ++k)
+        {
+            if (row[k].first == row[last].first)
+            {
+                row[last].second += row[k].second;
+            }
+            else
+            {
+                row[++last] = row[k];
+            }
+        }
+        row.resize(last + 1);
     }
+
+    // Compressed row storage
+    A_.resize(n, n);
+    int* start = A_.outerIndexPtr();
+    start[0] = 0;
     for (label i = 0; i < n; ++i)
     {
-        start[i + 1] += start[i];
+        start[i + 1] = start[i] + rows_[i].size();
     }
     A_.resizeNonZeros(start[n]);
     int* col = A_.innerIndexPtr();
     scalar* val = A_.valuePtr();
-    b_.resize(n);
-
-    #pragma omp parallel
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
     {
-        std::vector<std::pair<int, scalar>> row;
-
-        #pragma omp for schedule(static)
-        for (label i = 0; i < n; ++i)
+        int k = start[i];
+        for (const auto& entry : rows_[i])
         {
-            row.clear();
-            const scalar ADirichlet = -rho*(g & x[i]);
-            if (kind[i] == dirichlet)
-            {
-                row.emplace_back(i, 1);
-                b_[i] = ADirichlet;
-            }
-            else
-            {
-                const bool sources = kind[i] == equation;
-                const scalar twoByGamma = 2/gamma[i];
-                scalar diag = 0;
-                scalar bi = sources ? -rho/dt*divU[i] : 0;
-                for (label k = off[i]; k < off[i + 1]; ++k)
-                {
-                    const label j = nbr[k];
-                    const scalar Vj = volume(i, j);
-                    if (Vj == 0) continue;
-                    const scalar c = -twoByGamma*Vj*K.dWdrByR(r[k]);
-                    diag += c;
-                    if (kind[j] == dirichlet)
-                    {
-                        bi -= c*rho*(g & x[j]);
-                    }
-                    else
-                    {
-                        row.emplace_back(j, -c);
-                    }
-                }
-                for (label k = wOff[i]; k < wOff[i + 1] && sources; ++k)
-                {
-                    bi -= twoByGamma*dAdn[seg[k]]*mag(gradGammaAs[k]);
-                }
-                if (kind[i] == dry)
-                {
-                    bi += 1e-6*diag*ADirichlet;
-                    diag *= 1 + 1e-6;
-                }
-                row.emplace_back(i, diagFactor*diag);
-                b_[i] = bi;
-            }
-
-            // Eigen's compressed rows hold their columns in ascending order
-            std::sort(row.begin(), row.end());
-            int k = start[i];
-            for (const auto& entry : row)
-            {
-                col[k] = entry.first;
-                val[k] = entry.second;
-                ++k;
-            }
+            col[k] = entry.first;
+            val[k] = entry.second;
+            ++k;
         }
     }
 }
@@ -190,17 +243,21 @@ void Foam::SPH::isph::makeCompatible()
     // are antisymmetric), so only a right-hand side with
     // sum_a V_a gamma_a b_a = 0 has a solution
     const scalar* gamma = usaw_->gamma().cdata();
+    const label n = parts_.size();
     scalar sumW = 0, sumWB = 0;
-    for (label i = 0; i < nFluid_; ++i)
+    for (label i = 0; i < n; ++i)
     {
         const scalar w = V_[i]*gamma[i];
         sumW += w;
         sumWB += w*b_[i];
     }
     const scalar mean = sumWB/sumW;
-    for (label i = 0; i < nFluid_; ++i)
+    for (label i = 0; i < n; ++i)
     {
-        b_[i] -= mean;
+        if (V_[i] > 0)
+        {
+            b_[i] -= mean;
+        }
     }
 }
 

@@ -59,14 +59,14 @@ void Foam::SPH::isph::predictVelocity(const scalar dt)
     const vector2DField& U = parts_.field<vector2D>("U");
 
     // Eq. (31) without gravity (carried by A = p - rho g.x) with the wall
-    // friction (15)-(17); the floor of eq. (17) is the first row's distance
+    // friction (15)-(17)
     if (nu_ > 0)
     {
         dispatch(*kernel_, [&](const auto& K)
         {
             usaw::laminarViscous
             (
-                K, nbrs_, *usaw_, V_, rho0_*nu_, U, 0.5*dr_, visc_
+                K, nbrs_, *usaw_, V_, rho0_*nu_, U, dr_, visc_
             );
         });
     }
@@ -148,6 +148,27 @@ void Foam::SPH::isph::detectFreeSurface(const scalar dt)
 }
 
 
+void Foam::SPH::isph::renormalise()
+{
+    const auto start = now();
+    dispatch(*kernel_, [&](const auto& K)
+    {
+        usaw::gradMinus(K, nbrs_, *usaw_, V_, parts_.positions(), R_);
+    });
+
+    // R = G-{r}^-1: OpenFOAM's (grad r)_ij = d_i r_j, so G-{p} = G-{r} .
+    // grad p for a linear p, and R . G-{p} is exact for it, also where the
+    // kernel is cut by the free surface. A particle with too few
+    // neighbours to span the plane (a droplet, a jet one particle thick)
+    // keeps G-{p}.
+    for (tensor2D& M : R_)
+    {
+        M = det(M) > minMomentDet_ ? inv(M) : tensor2D::I;
+    }
+    times_.operators += secondsSince(start);
+}
+
+
 void Foam::SPH::isph::projectVelocity(const scalar dt)
 {
     const auto start = now();
@@ -157,22 +178,13 @@ void Foam::SPH::isph::projectVelocity(const scalar dt)
         if (pressureGradient_ == pressureGradientType::antisymmetric)
         {
             usaw::gradPlus(K, nbrs_, *usaw_, V_, p, gradP_);
-            return;
         }
-
-        // G-{p} (8) times the inverse of G-{r}: exact for a linear p also
-        // where the kernel is cut by the free surface. OpenFOAM's
-        // (grad r)_ij = d_i r_j, so G-{p} = M . grad p for a linear p
-        usaw::gradMinus(K, nbrs_, *usaw_, V_, p, gradP_);
-        usaw::gradMinus(K, nbrs_, *usaw_, V_, parts_.positions(), gradU_);
-        for (label i = 0; i < nFluid_; ++i)
+        else
         {
-            // A particle with too few neighbours to span the plane (a
-            // droplet, a jet one particle thick) keeps G-{p}
-            const tensor2D& M = gradU_[i];
-            if (det(M) > minMomentDet_)
+            usaw::gradMinus(K, nbrs_, *usaw_, V_, p, gradP_);
+            for (label i = 0; i < nFluid_; ++i)
             {
-                gradP_[i] = inv(M) & gradP_[i];
+                gradP_[i] = R_[i] & gradP_[i];
             }
         }
     });
@@ -343,6 +355,10 @@ void Foam::SPH::isph::evolve()
     findNeighbours();
 
     predictVelocity(dt);
+    if (pressureGradient_ == pressureGradientType::renormalised)
+    {
+        renormalise();
+    }
     if (freeSurface_)
     {
         detectFreeSurface(dt);
