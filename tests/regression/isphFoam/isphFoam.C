@@ -221,8 +221,9 @@ TEST(isphFoam, cavityRe100MatchesGhiaOn30x30)
 
 TEST(isphFoam, restartIsExactToTheBit)
 {
-    // A free surface (tank, with water set moving) and a moving lid (cavity,
-    // during its ramp): one run to T, and one to T/2 restarted to T
+    // A free surface (tank, with water set moving), a moving lid (cavity,
+    // during its ramp) and a turning bar: one run to T, and one to T/2
+    // restarted to T
     struct restartCase { fileName dir; std::string T, half; };
     std::vector<restartCase> cases;
     {
@@ -232,6 +233,12 @@ TEST(isphFoam, restartIsExactToTheBit)
         cases.push_back({dir, "0.2", "0.1"});
     }
     cases.push_back({cavityCase("isphRestartCavity", "20", "0.6"), "0.6", "0.3"});
+    {
+        // Walls that turn: the vertex particles and segments move
+        const fileName dir = copyCase(here + "/stirrer", "isphRestartStirrer");
+        setEntry(dir/"system"/"controlDict", "endTime", "0.8");
+        cases.push_back({dir, "0.8", "0.4"});
+    }
 
     for (const restartCase& c : cases)
     {
