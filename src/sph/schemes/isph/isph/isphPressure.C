@@ -151,44 +151,46 @@ void Foam::SPH::isph::assemblePressure(const Kernel& K, const scalar dt)
 
         const scalar invGamma = 1/gamma[i];
         const bool sources = kind[i] == equation;
-        // An extension row averages over the fluid and the reached vertices
+        // The fluid particle's own normal gradient, eq. (10) as printed:
+        // (grad A)_a . grad gamma_a/gamma_a with (grad A)_a = R G-{A}, the
+        // gradient of the projection (eq. (40) doubles the wall's instead,
+        // and the projection then leaves the divergence of a particle
+        // driven towards a wall); q = R^T grad gamma_a/gamma_a
+        const bool own = sources && ownGradient && i < nF;
+        const vector2D q
+        (
+            own ? invGamma*(R[i].T() & gradGamma[i]) : vector2D::zero
+        );
+
+        // One entry per neighbour (an extension row averages over the fluid
+        // and the reached vertices)
         for (label k = off[i]; k < off[i + 1]; ++k)
         {
             const label j = nbr[k];
             if (sources || j < nF || kind[j] == equation || kind[j] == extension)
             {
-                add(j, -2*invGamma*V[j]*K.dWdrByR(r[k]));
+                scalar c = -2*invGamma*V[j]*K.dWdrByR(r[k]);
+                if (own)
+                {
+                    c -= invGamma*V[j]*(K.gradW(rij[k], r[k]) & q);
+                }
+                add(j, c);
             }
         }
 
         if (sources)
         {
             bi -= rho/dt*divU[i];
-
-            // The fluid particle's own normal gradient, eq. (10) as printed:
-            // (grad A)_a . grad gamma_a/gamma_a with (grad A)_a = R G-{A},
-            // the gradient of the projection; eq. (40) doubles the wall's
-            // instead, and cannot stop a particle driven into the wall
-            const bool own = ownGradient && i < nF;
-            if (own)
+            for (label k = wOff[i]; k < wOff[i + 1]; ++k)
             {
-                const vector2D q(invGamma*(R[i].T() & gradGamma[i]));
-                for (label k = off[i]; k < off[i + 1]; ++k)
+                if (own)
                 {
-                    const label j = nbr[k];
-                    add(j, -invGamma*V[j]*(K.gradW(rij[k], r[k]) & q));
-                }
-                for (label k = wOff[i]; k < wOff[i + 1]; ++k)
-                {
+                    // (A_a - A_s) grad gamma_as . q, A_s the vertices' mean
                     const scalar f = invGamma*(gradGammaAs[k] & q);
                     add(ends[seg[k]].first(), 0.5*f);
                     add(ends[seg[k]].second(), 0.5*f);
                 }
-            }
-            const scalar wallFactor = own ? 1 : 2;
-            for (label k = wOff[i]; k < wOff[i + 1]; ++k)
-            {
-                bi -= wallFactor*invGamma*dAdn[seg[k]]*mag(gradGammaAs[k]);
+                bi -= (own ? 1 : 2)*invGamma*dAdn[seg[k]]*mag(gradGammaAs[k]);
             }
         }
         row.emplace_back(i, diagFactor*diag);
