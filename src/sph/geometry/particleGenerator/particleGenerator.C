@@ -28,6 +28,24 @@ Foam::scalar Foam::SPH::particleGenerator::readSpacing() const
 }
 
 
+bool Foam::SPH::particleGenerator::readUsaw(const Time& runTime)
+{
+    const IOdictionary schemes
+    (
+        IOobject
+        (
+            "sphSchemes",
+            runTime.system(),
+            runTime,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    return schemes.getOrDefault<word>("boundaryMethod", word::null) == "usaw";
+}
+
+
 Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
 {
     label n = 0;
@@ -42,8 +60,15 @@ Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
         return n;
     }
 
-    // Layer k sits (k + 1/2) dr outside the wall and the first fluid
-    // particle dr/2 inside it: enough layers to fill its kernel support
+    // USAW walls (000_8c7cd3aabddcf18a.txt) are the vertices and segments
+    // alone: no particle behind them
+    if (usaw_)
+    {
+        Info<< "No dummy particles: boundaryMethod usaw in system/sphSchemes"
+            << nl;
+        return 0;
+    }
+
     IOdictionary schemes
     (
         IOobject
@@ -56,6 +81,9 @@ Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
             false
         )
     );
+
+    // Layer k sits (k + 1/2) dr outside the wall and the first fluid
+    // particle dr/2 inside it: enough layers to fill its kernel support
     const autoPtr<kernel> k(kernel::New(schemes, dr_));
     return max(label(1), label(std::floor(k->support()/dr_ + 1e-9)));
 }
@@ -84,9 +112,14 @@ void Foam::SPH::particleGenerator::seedFluid
     bool outsideIsError
 )
 {
+    // USAW: the nodes k dr of the walls' corner, so that straight walls
+    // through it carry the lattice's edge nodes (the vertex particles,
+    // truncated fluid particles of 000_... section 2) and the first fluid
+    // row lies dr from them
     vector2D wlo, whi;
     walls_->bounds(wlo, whi);
-    const vector2D origin(dict_.getOrDefault<vector2D>("latticeOrigin", wlo));
+    const vector2D corner(usaw_ ? wlo - 0.5*vector2D(dr_, dr_) : wlo);
+    const vector2D origin(dict_.getOrDefault<vector2D>("latticeOrigin", corner));
 
     // Lattice indices covering [lo, hi]
     const label i0 = label(std::floor((lo.x() - origin.x())/dr_ - 0.5));
@@ -156,7 +189,8 @@ Foam::SPH::particleGenerator::particleGenerator
             false
         )
     ),
-    dr_(readSpacing())
+    dr_(readSpacing()),
+    usaw_(readUsaw(runTime))
 {
     Info<< "Particle spacing dr = " << dr_ << nl;
 

@@ -1,0 +1,336 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    isphFoam on short real cases: still water in a tank (the hydrostatic
+    wall condition (43)-(46), water at rest), the lid-driven cavity at
+    Re = 100 against Ghia et al. (1982), exact restarts (free surface and
+    moving lid), a pressure solve that does not converge, and bad
+    dictionaries that must name their file and entry.
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "testCase.H"
+#include "particles.H"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+using namespace Foam;
+using sphTest::run;
+
+namespace
+{
+    const std::string bin = std::string(SPHFOAM_BINARY_DIR) + "/applications/";
+    const std::string here = std::string(SPHFOAM_SOURCE_DIR) + "/tests/regression/isphFoam";
+
+    //- Replace the value of a 'key value;' line of a dictionary file
+    void setEntry(const fileName& file, const std::string& key, const std::string& value)
+    {
+        std::string out;
+        run("sed -i 's/^" + key + " .*/" + key + " " + value + ";/' " + file, out);
+    }
+
+    //- A copy of a case folder under the build's tests/cases, meshed
+    fileName copyCase(const std::string& from, const std::string& name)
+    {
+        const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/name;
+        rmDir(dir);
+        mkDir(dir.path());
+        std::string out;
+        EXPECT_EQ(run("cp -r " + from + " " + dir, out), 0) << out;
+        return dir;
+    }
+
+    fileName tankCase(const std::string& name, const std::string& dr, const std::string& endTime)
+    {
+        const fileName dir =
+            copyCase(std::string(SPHFOAM_SOURCE_DIR) + "/tutorials/isph/hydrostaticTank", name);
+        setEntry(dir/"system"/"sphMeshDict", "dr", dr);
+        setEntry(dir/"system"/"controlDict", "endTime", endTime);
+        return dir;
+    }
+
+    fileName cavityCase(const std::string& name, const std::string& n, const std::string& endTime)
+    {
+        const fileName dir = copyCase(here + "/cavity", name);
+        setEntry(dir/"system"/"sphMeshDict", "n", n);
+        setEntry(dir/"system"/"controlDict", "endTime", endTime);
+        return dir;
+    }
+
+    int mesh(const fileName& dir, std::string& out)
+    {
+        return run(bin + "sphMesh -case " + dir, out);
+    }
+
+    int solve(const fileName& dir, std::string& out)
+    {
+        return run(bin + "isphFoam -case " + dir, out);
+    }
+
+    std::string tail(const std::string& s, std::size_t n = 3000)
+    {
+        return s.size() > n ? s.substr(s.size() - n) : s;
+    }
+
+    //- Particle fields of a time directory
+    struct state
+    {
+        List<vector2D> x, U;
+        scalarList p;
+        labelList type;
+    };
+
+    state readState(const fileName& dir, const word& time)
+    {
+        auto runTime = sphTest::makeTime(dir);
+        SPH::particles parts(*runTime, time, SPH::particles::defaultLocal, false);
+        parts.add<vector2D>("U");
+        parts.add<scalar>("p");
+        parts.add<label>("type");
+        parts.read();
+        return state{parts.positions(), parts.field<vector2D>("U"),
+            parts.field<scalar>("p"), parts.field<label>("type")};
+    }
+
+    //- u at x0 by a linear least-squares fit, Wendland-weighted (h = 2 dr),
+    //- over the fluid and wall vertex particles within 2h: the wall's own
+    //- velocity enters next to it (a Shepard average of the fluid alone
+    //- cannot reach the lid's)
+    scalar sampleU(const state& s, const vector2D& x0, const scalar h)
+    {
+        Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d b = Eigen::Vector3d::Zero();
+        forAll(s.x, i)
+        {
+            const vector2D d(s.x[i] - x0);
+            const scalar q = mag(d)/h;
+            if (q >= 2) continue;
+            const scalar w = pow4(1 - q/2)*(1 + 2*q);
+            const Eigen::Vector3d P(1, d.x(), d.y());
+            A += w*P*P.transpose();
+            b += w*s.U[i].x()*P;
+        }
+        return A.ldlt().solve(b)[0];
+    }
+
+    //- Ghia et al. (1982) table I, Re = 100: (y, u) on x = 1/2
+    std::vector<std::pair<scalar, scalar>> ghiaRe100()
+    {
+        // The project's shared reference data, beside the project folder
+        std::vector<std::pair<scalar, scalar>> table;
+        std::ifstream is
+        (
+            std::string(SPHFOAM_SOURCE_DIR)
+          + "/../shared/reference/ghia1982_u_vertical_centreline.csv"
+        );
+        std::string line;
+        while (std::getline(is, line))
+        {
+            if (line.empty() || line[0] == '#' || line[0] == 'y') continue;
+            std::replace(line.begin(), line.end(), ',', ' ');
+            std::istringstream ls(line);
+            scalar y, u;
+            ls >> y >> u;
+            table.emplace_back(y, u);
+        }
+        return table;
+    }
+
+    //- The last good state's time from a failure message
+    std::string lastGoodTime(const std::string& out)
+    {
+        const std::size_t at = out.find("The last good state, time ");
+        if (at == std::string::npos) return "";
+        return out.substr(at + 26, out.find(',', at + 26) - at - 26);
+    }
+}
+
+
+TEST(isphFoam, hydrostaticTankStaysAtRest)
+{
+    // 25 particles deep (H = 0.5 m), 2 s: the wall condition (43) gives
+    // dp/dn = rho g.n (46), the free surface p = 0: p = rho g (H - y)
+    const fileName dir = tankCase("isphTank", "0.02", "2");
+    std::string out;
+    ASSERT_EQ(mesh(dir, out), 0) << out;
+    EXPECT_NE(out.find("No dummy particles"), std::string::npos) << out;
+    ASSERT_EQ(solve(dir, out), 0) << tail(out);
+    EXPECT_NE(out.find("free surface        D{r} <= 1.5"), std::string::npos) << out;
+    EXPECT_EQ(out.find("moving walls"), std::string::npos) << out;
+
+    // The tutorial's own check, as Allrun runs it
+    ASSERT_EQ(sphTest::runWithBashrc(std::string(dir) + "/check -case " + dir, out), 0) << out;
+    const auto r = sphTest::readKeyValues(dir/"hydrostatic.dat");
+    ASSERT_EQ(r.count("maxPressureError"), 1u) << out;
+    std::cout << "    tank dr = 0.02, t = 2 s: max |p - rho g (H - y)|/(rho g H) "
+        << r.at("maxPressureError") << ", max |U|/sqrt(gH) " << r.at("maxSpeedBySqrtGH")
+        << ", max displacement/dr " << r.at("maxDisplacementByDr") << std::endl;
+    // Acceptance: pressure within 1 %; at rest: speeds below 0.1 % of
+    // sqrt(g H) (measured 1e-7) and no particle further than dr/4 from its
+    // start (the shifting relaxes the rows next to the walls, ~0.1 dr)
+    EXPECT_LT(std::stod(r.at("maxPressureError")), 0.01);
+    EXPECT_LT(std::stod(r.at("maxSpeedBySqrtGH")), 1e-3);
+    EXPECT_LT(std::stod(r.at("maxDisplacementByDr")), 0.25);
+}
+
+
+TEST(isphFoam, cavityRe100MatchesGhiaOn30x30)
+{
+    // u on x = 1/2 at t = 10 s (the flow is steady by then: 0.0071 at
+    // t = 10 and 0.0066 at t = 20 on 40 x 40) at Ghia's 15 inner points.
+    // Measured on 30 x 30: 0.014 U at most; 40 x 40: 0.0071 U
+    const fileName dir = cavityCase("isphCavity", "30", "10");
+    std::string out;
+    ASSERT_EQ(mesh(dir, out), 0) << out;
+    ASSERT_EQ(solve(dir, out), 0) << tail(out);
+    EXPECT_NE(out.find("lid: slides along itself at U (1 0), from rest over 1 s"), std::string::npos) << out;
+    EXPECT_NE(out.find("confined flow (no free surface)"), std::string::npos) << out;
+    EXPECT_EQ(out.find("free surface        D{r}"), std::string::npos) << out;
+    EXPECT_NE(out.find("BiCGStab:  Solving for p, Initial residual = "), std::string::npos) << out;
+    EXPECT_NE(out.find("Time in the steps:"), std::string::npos) << out;
+
+    const state s = readState(dir, "10");
+    const scalar dr = 1.0/30, h = 2*dr;
+    const auto table = ghiaRe100();
+    ASSERT_EQ(table.size(), 17u);
+    scalar maxErr = 0;
+    for (const auto& yu : table)
+    {
+        if (yu.first <= 0 || yu.first >= 1) continue;
+        const scalar u = sampleU(s, vector2D(0.5, yu.first), h);
+        maxErr = max(maxErr, mag(u - yu.second));
+        EXPECT_NEAR(u, yu.second, 0.02) << "y = " << yu.first;
+    }
+    std::cout << "    cavity Re = 100, 30 x 30, t = 10 s: max |u - u_Ghia| = "
+        << maxErr << " U" << std::endl;
+
+    // Every fluid particle is inside the cavity
+    forAll(s.x, i)
+    {
+        if (s.type[i] != 0) continue;
+        EXPECT_TRUE(s.x[i].x() > 0 && s.x[i].x() < 1 && s.x[i].y() > 0 && s.x[i].y() < 1)
+            << "particle " << i << " at " << s.x[i].x() << ' ' << s.x[i].y();
+    }
+}
+
+
+TEST(isphFoam, restartIsExactToTheBit)
+{
+    // A free surface (tank, with water set moving), a moving lid (cavity,
+    // during its ramp) and a turning bar: one run to T, and one to T/2
+    // restarted to T
+    struct restartCase { fileName dir; std::string T, half; };
+    std::vector<restartCase> cases;
+    {
+        const fileName dir = tankCase("isphRestartTank", "0.05", "0.2");
+        std::string out;
+        run("sed -i 's/^internalField .*/internalField uniform (0.3 0.1 0);/' " + dir/"0"/"U", out);
+        cases.push_back({dir, "0.2", "0.1"});
+    }
+    cases.push_back({cavityCase("isphRestartCavity", "20", "0.6"), "0.6", "0.3"});
+    {
+        // Walls that turn: the vertex particles and segments move
+        const fileName dir = copyCase(here + "/stirrer", "isphRestartStirrer");
+        setEntry(dir/"system"/"controlDict", "endTime", "0.8");
+        cases.push_back({dir, "0.8", "0.4"});
+    }
+
+    for (const restartCase& c : cases)
+    {
+        setEntry(c.dir/"system"/"controlDict", "writeInterval", c.half);
+        std::string out;
+        ASSERT_EQ(mesh(c.dir, out), 0) << out;
+        const fileName twice = c.dir + "Twice";
+        rmDir(twice);
+        ASSERT_EQ(run("cp -r " + c.dir + " " + twice, out), 0);
+
+        ASSERT_EQ(solve(c.dir, out), 0) << tail(out);
+
+        setEntry(twice/"system"/"controlDict", "endTime", c.half);
+        ASSERT_EQ(solve(twice, out), 0) << tail(out);
+        setEntry(twice/"system"/"controlDict", "endTime", c.T);
+        setEntry(twice/"system"/"controlDict", "startFrom", "latestTime");
+        ASSERT_EQ(solve(twice, out), 0) << tail(out);
+        EXPECT_NE(out.find("Restarting from"), std::string::npos) << out;
+
+        for (const word f : {"positions", "U", "p"})
+        {
+            EXPECT_EQ
+            (
+                run("cmp " + c.dir/c.T/"lagrangian/sph"/f + " " + twice/c.T/"lagrangian/sph"/f, out),
+                0
+            ) << c.dir << " " << f << ": " << out;
+        }
+    }
+}
+
+
+TEST(isphFoam, pressureSolveThatDoesNotConvergeStops)
+{
+    const fileName dir = cavityCase("isphNotConverged", "20", "0.5");
+    std::string out;
+    ASSERT_EQ(mesh(dir, out), 0) << out;
+    run("sed -i 's/^        maxIter .*/        maxIter         1;/' " + dir/"system"/"sphSolution", out);
+
+    EXPECT_EQ(solve(dir, out), 1);
+    EXPECT_NE(out.find("The pressure solve did not converge"), std::string::npos) << tail(out);
+    EXPECT_NE(out.find("stopIfNotConverged no"), std::string::npos) << tail(out);
+    const std::string time = lastGoodTime(out);
+    ASSERT_FALSE(time.empty()) << tail(out);
+    const state s = readState(dir, time);
+    EXPECT_GT(s.x.size(), 0);
+
+    // Accepted when asked
+    run("sed -i 's/^    stopIfNotConverged .*/    stopIfNotConverged no;/' " + dir/"system"/"sphSolution", out);
+    EXPECT_EQ(solve(dir, out), 0) << tail(out);
+    EXPECT_NE(out.find("solves that do not converge are accepted"), std::string::npos) << out;
+}
+
+
+TEST(isphFoam, unknownLinearSolverIsAnIOErrorListingTheValidOnes)
+{
+    const fileName dir = cavityCase("isphBadSolver", "10", "0.1");
+    std::string out;
+    ASSERT_EQ(mesh(dir, out), 0) << out;
+    run("sed -i 's/^        solver .*/        solver          PCG;/' " + dir/"system"/"sphSolution", out);
+    EXPECT_EQ(solve(dir, out), 1);
+    for (const char* s : {"PCG", "BiCGStab", "GMRES", "system/sphSolution"})
+    {
+        EXPECT_NE(out.find(s), std::string::npos) << s << ": " << out;
+    }
+}
+
+
+TEST(isphFoam, missingOrBadEntriesNameTheFileAndEntry)
+{
+    struct badEntry { const char* file; const char* sed; const char* entry; };
+    const std::vector<badEntry> cases
+    {
+        {"system/sphSolution", "/^        tolerance /d", "tolerance"},
+        {"system/sphSolution", "/^        preconditioner /d", "preconditioner"},
+        {"system/sphSolution", "s/^        preconditioner .*/        preconditioner DIC;/", "ILU0"},
+        {"system/sphSchemes", "/^boundaryMethod /d", "boundaryMethod"},
+        {"system/sphSchemes", "s/^boundaryMethod .*/boundaryMethod dummyRepulsive;/", "usaw"},
+        {"system/sphSchemes", "s/^pressureGradient .*/pressureGradient Gplus;/", "antisymmetric"},
+        {"system/sphSchemes", "s/^shiftCoeff .*/shiftCoeff -1;/", "shiftCoeff"},
+        {"constant/movingWalls", "s/^lid$/lidd/", "lidd"},
+        {"constant/movingWalls", "s/^    type .*/    type        translating;/", "rotating"},
+        {"constant/movingWalls", "s/^    U .*/    U           (0 1);/", "along itself"},
+    };
+    label k = 0;
+    for (const badEntry& c : cases)
+    {
+        const fileName dir = cavityCase("isphBadEntry" + std::to_string(k++), "10", "0.05");
+        std::string out;
+        ASSERT_EQ(mesh(dir, out), 0) << out;
+        run("sed -i '" + std::string(c.sed) + "' " + dir/c.file, out);
+        EXPECT_EQ(solve(dir, out), 1) << c.sed << ": " << tail(out);
+        EXPECT_NE(out.find(c.entry), std::string::npos) << c.sed << ": " << out;
+        EXPECT_NE(out.find(c.file), std::string::npos) << c.sed << ": " << out;
+    }
+}

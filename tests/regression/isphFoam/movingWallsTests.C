@@ -1,0 +1,212 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    The prescribed wall motions of isphFoam (constant/movingWalls): the
+    sliding and rotating motions with their ramps, which vertices move
+    (a vertex where a moving patch meets a still one stays), and the errors
+    of a bad dictionary.
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "testCase.H"
+#include "movingWalls.H"
+#include "wallShape.H"
+#include "mathematicalConstants.H"
+
+using namespace Foam;
+
+namespace
+{
+    const scalar dr = 0.1;
+
+    //- Walls from "name { type ...; ... }" patch dictionaries
+    SPH::wallMesh makeWalls(const std::string& text)
+    {
+        const dictionary d(sphTest::dict(text));
+        wordList names;
+        List<List<SPH::wallChain>> chains;
+        for (const entry& e : d)
+        {
+            names.append(e.keyword());
+            chains.append(SPH::wallShape::New(e.keyword(), e.dict())->chains(dr));
+        }
+        return SPH::wallMesh(names, chains, dr);
+    }
+
+    const std::string cavity =
+        "lid { type line; points ((1 1) (0 1)); }"
+        " fixedWalls { type polyline; points ((0 1) (0 0) (1 0) (1 1)); }";
+
+    std::string errorOf(const std::function<void()>& f)
+    {
+        try
+        {
+            f();
+        }
+        catch (const Foam::error& err)
+        {
+            return std::string(err.message());
+        }
+        return "";
+    }
+
+    class movingWalls : public ::testing::Test
+    {
+    protected:
+        void SetUp() override
+        {
+            sphTest::throwOnFatal();
+        }
+    };
+}
+
+
+TEST_F(movingWalls, slidingLidRampsAndItsCornersStay)
+{
+    const SPH::wallMesh walls(makeWalls(cavity));
+    const SPH::movingWalls motion
+    (
+        sphTest::dict("lid { type sliding; U (1 0); rampTime 2; }"), walls
+    );
+    EXPECT_TRUE(motion.any());
+    EXPECT_FALSE(motion.movesGeometry());
+
+    const label n = walls.points().size();
+    List<vector2D> x(n), U(n);
+    label nMoving = 0;
+    for (const scalar t : {-1.0, 0.0, 0.5, 2.0, 7.0})
+    {
+        motion.vertices(t, x, U);
+        const scalar ramp = t <= 0 ? 0 : min(t/2, 1.0);
+        nMoving = 0;
+        forAll(x, v)
+        {
+            EXPECT_EQ(x[v], walls.points()[v]);
+            const vector2D& p = walls.points()[v];
+            const bool lidInterior = p.y() > 1 - 1e-12 && p.x() > 1e-12 && p.x() < 1 - 1e-12;
+            EXPECT_EQ(U[v], lidInterior ? ramp*vector2D(1, 0) : vector2D::zero)
+                << "vertex at " << p.x() << ' ' << p.y() << ", t = " << t;
+            nMoving += lidInterior;
+        }
+    }
+    EXPECT_EQ(nMoving, 9);
+}
+
+
+TEST_F(movingWalls, rotatingWallTurnsAboutItsOriginFromRest)
+{
+    // A circle about (0.3 0.2) turning at omega = 2 rad/s after a 1 s ramp:
+    // theta = omega t^2/(2 T) for t < T, omega (t - T/2) after
+    const SPH::wallMesh walls
+    (
+        makeWalls("drum { type circle; centre (0.3 0.2); radius 0.5; side outside; }")
+    );
+    const SPH::movingWalls motion
+    (
+        sphTest::dict("drum { type rotating; origin (0.3 0.2); omega 2; rampTime 1; }"),
+        walls
+    );
+    EXPECT_TRUE(motion.movesGeometry());
+
+    const vector2D c(0.3, 0.2);
+    const label n = walls.points().size();
+    List<vector2D> x(n), U(n), xa(n), xb(n), Ua(n);
+    for (const scalar t : {0.5, 1.0, 3.0})
+    {
+        const scalar theta = t < 1 ? t*t : 2*(t - 0.5);
+        const scalar omega = 2*min(t, 1.0);
+        motion.vertices(t, x, U);
+        const scalar eps = 1e-6;
+        motion.vertices(t - eps, xa, Ua);
+        motion.vertices(t + eps, xb, Ua);
+        forAll(x, v)
+        {
+            const vector2D d0(walls.points()[v] - c);
+            const vector2D d(x[v] - c);
+            EXPECT_NEAR(mag(d), mag(d0), 1e-12);
+            // The angle turned
+            EXPECT_NEAR(d.x(), std::cos(theta)*d0.x() - std::sin(theta)*d0.y(), 1e-12);
+            EXPECT_NEAR(d.y(), std::sin(theta)*d0.x() + std::cos(theta)*d0.y(), 1e-12);
+            // omega e_z x (x - c), the time derivative of the position
+            EXPECT_NEAR(U[v].x(), -omega*d.y(), 1e-12);
+            EXPECT_NEAR(U[v].y(), omega*d.x(), 1e-12);
+            EXPECT_NEAR(mag((xb[v] - xa[v])/(2*eps) - U[v]), 0, 1e-6);
+        }
+    }
+}
+
+
+TEST_F(movingWalls, patternEntriesMoveEveryPatchTheyMatch)
+{
+    const SPH::wallMesh walls
+    (
+        makeWalls
+        (
+            "paddleA { type line; points ((0 0) (1 0)); }"
+            " paddleB { type line; points ((1 0) (1 1)); }"
+        )
+    );
+    const SPH::movingWalls motion
+    (
+        sphTest::dict("\"paddle.*\" { type rotating; origin (0 0); omega 1; }"), walls
+    );
+    // One motion for both, so their shared vertex turns with them
+    EXPECT_EQ(motion.motions().size(), 1);
+    for (const label m : motion.vertexMotion())
+    {
+        EXPECT_EQ(m, 0);
+    }
+}
+
+
+TEST_F(movingWalls, noFileMeansNoMotion)
+{
+    const fileName dir = sphTest::makeCase("movingWallsNone");
+    auto runTime = sphTest::makeTime(dir);
+    const SPH::wallMesh walls(makeWalls(cavity));
+    const SPH::movingWalls motion(*runTime, walls);
+    EXPECT_FALSE(motion.any());
+    EXPECT_FALSE(motion.movesGeometry());
+}
+
+
+TEST_F(movingWalls, badEntriesAreErrorsNamingThem)
+{
+    const SPH::wallMesh walls(makeWalls(cavity));
+    auto make = [&](const std::string& text)
+    {
+        return [&walls, text]() { SPH::movingWalls m(sphTest::dict(text), walls); };
+    };
+
+    // An unknown patch, and the patches there are
+    std::string msg = errorOf(make("lidd { type sliding; U (1 0); }"));
+    EXPECT_NE(msg.find("lidd"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("fixedWalls"), std::string::npos) << msg;
+
+    // A pattern that matches nothing
+    msg = errorOf(make("\"wall.*\" { type sliding; U (1 0); }"));
+    EXPECT_NE(msg.find("matches no wall patch"), std::string::npos) << msg;
+
+    // An unknown motion, and the motions there are
+    msg = errorOf(make("lid { type translating; U (1 0); }"));
+    for (const char* s : {"translating", "sliding", "rotating"})
+    {
+        EXPECT_NE(msg.find(s), std::string::npos) << msg;
+    }
+
+    // A sliding wall that would move through itself
+    msg = errorOf(make("lid { type sliding; U (0.6 0.8); }"));
+    EXPECT_NE(msg.find("along itself"), std::string::npos) << msg;
+
+    // A rotating patch that shares a vertex with a still one
+    msg = errorOf(make("lid { type rotating; origin (0.5 0.5); omega 1; }"));
+    EXPECT_NE(msg.find("tear"), std::string::npos) << msg;
+
+    // Missing entries
+    msg = errorOf(make("lid { type sliding; }"));
+    EXPECT_NE(msg.find("U"), std::string::npos) << msg;
+    msg = errorOf(make("lid { type sliding; U (1 0); rampTime -1; }"));
+    EXPECT_NE(msg.find("rampTime"), std::string::npos) << msg;
+}
