@@ -113,6 +113,9 @@ void Foam::SPH::wcsph::readSchemes()
     }
 
     densityDiffusion_ = schemes_.getOrDefault<bool>("densityDiffusion", true);
+    densityDiffusionHydrostatic_ =
+        densityDiffusion_
+     && schemes_.getOrDefault<bool>("densityDiffusionHydrostatic", true);
 
     // Not in 004_..., which relies on the density diffusion alone; a small
     // alpha damps the velocity noise of water at rest
@@ -349,7 +352,8 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     ),
     rho0_(0), nu_(0), g_(vector2D::zero),
     c0_(0), gamma_(7), b0_(0), ks_(1.5), K_(0),
-    densityDiffusion_(true), alphaAV_(0), viscosity_(viscosityModel::Morris),
+    densityDiffusion_(true), densityDiffusionHydrostatic_(true), alphaAV_(0),
+    viscosity_(viscosityModel::Morris),
     minDeltaTFraction_(1e-3),
     walls_(new wallMesh(runTime)),
     parts_(runTime, runTime.timeName()),
@@ -434,8 +438,18 @@ void Foam::SPH::wcsph::printStages() const
         << gamma_ << ", b0 " << b0_ << nl
         << "    continuity         eq. (6)"
         << (densityDiffusion_ ? " with Rusanov density diffusion (7)" : "")
-        << nl
-        << "    momentum           Hu-Adams pressure gradient eq. (8), gravity "
+        << nl;
+    if (densityDiffusion_)
+    {
+        Info<< "                       of "
+            << (
+                   densityDiffusionHydrostatic_
+                 ? "rho - rho_hydrostatic (densityDiffusionHydrostatic yes)"
+                 : "rho, as printed (densityDiffusionHydrostatic no)"
+               )
+            << nl;
+    }
+    Info<< "    momentum           Hu-Adams pressure gradient eq. (8), gravity "
         << g_ << nl
         << "    repulsion          eqs. (11)-(12): ks " << ks_ << ", K " << K_
         << nl;

@@ -69,6 +69,8 @@ void Foam::SPH::wcsph::fluidRates(const Kernel& W)
     const scalar cFactor = std::sqrt(b0_*gamma_/rho0_);
     const scalar cExponent = 0.5*(gamma_ - 1);
     const bool diffuse = densityDiffusion_;
+    const bool hydrostatic = densityDiffusionHydrostatic_;
+    const vector2D g = g_;
     const bool viscous = viscosity_ == viscosityModel::Morris;
     const scalar nu = nu_;
     const scalar rhoRef = rho0_;
@@ -114,10 +116,16 @@ void Foam::SPH::wcsph::fluidRates(const Kernel& W)
             const vector2D Uij = U[i] - U[j];
 
             // Continuity, eq. (6), with Rusanov diffusion (n_ij.gradW = -dW)
+            // of the departure from rest: rho_ij^H = rho g.(x_j - x_i)/c^2
+            // at the pair's mean density and sound speed (see wcsph.H)
             drho += rhoI*Vj*(Uij & gradW);
             if (diffuse)
             {
-                drho -= max(cI, c[j])*Vj*(rhoJ - rhoI)*dW;
+                const scalar rhoH =
+                    hydrostatic
+                  ? -(rhoI + rhoJ)/(cI*cI + c[j]*c[j])*(g & rij[k])
+                  : 0;
+                drho -= max(cI, c[j])*Vj*(rhoJ - rhoI - rhoH)*dW;
             }
 
             // Hu-Adams pressure gradient, eq. (8)
@@ -150,7 +158,7 @@ void Foam::SPH::wcsph::fluidRates(const Kernel& W)
                 dU += (K*psi/(r[k]*r[k]))*rij[k];
             }
         }
-        dU += g_;
+        dU += g;
 
         drhodt_[i] = drho;
         dUdt_[i] = dU;
