@@ -13,6 +13,9 @@ Description
 #include "particles.H"
 #include "wallMesh.H"
 
+#include <fstream>
+#include <sstream>
+
 
 using namespace Foam;
 using sphTest::run;
@@ -67,26 +70,38 @@ namespace
 TEST(wcsphFoam, hydrostaticTankStaysAtRestForTwoSeconds)
 {
     // H = 0.5 m, 20 particles deep; 2 s is about 9 periods of the tank's
-    // gravest sloshing mode
+    // gravest sloshing mode. The particles are checked every 0.02 s (a tenth
+    // of the shortest sloshing period checked), the bottom pressure at
+    // mid-tank every step (the tutorial's probe)
     const scalar H = 0.5, dr = 0.025, rho = 1000, g = 9.81;
     const fileName dir = tankCase("wcsphTank", dr, "2");
-    setEntry(dir/"system"/"controlDict", "writeInterval", "1");
+    setEntry(dir/"system"/"controlDict", "writeInterval", "0.02");
     std::string out;
     ASSERT_EQ(run(bin + "wcsphFoam -case " + dir, out), 0) << out.substr(out.size() - 2000);
 
     auto runTime = sphTest::makeTime(dir);
     const SPH::wallMesh walls(*runTime);
-    for (const word t : {"1", "2"})
+    const instantList times = runTime->times();
+    label nTimes = 0;
+    scalar maxSpeed = 0, tMaxSpeed = 0;
+    for (const instant& t : times)
     {
-        const state s = readState(dir, t);
-        scalar maxSpeed = 0, pBottom = 0;
+        if (t.value() <= 0) continue;
+        ++nTimes;
+        const state s = readState(dir, t.name());
+        scalar pBottom = 0;
         label nBottom = 0;
         forAll(s.x, i)
         {
             if (s.type[i] != 0) continue;
             // No fluid particle is behind a wall or on it
-            EXPECT_GT(walls.signedDistance(s.x[i]), 0.1*dr) << "particle " << i;
-            maxSpeed = max(maxSpeed, mag(s.U[i]));
+            EXPECT_GT(walls.signedDistance(s.x[i]), 0.1*dr)
+                << "particle " << i << ", t = " << t.name();
+            if (mag(s.U[i]) > maxSpeed)
+            {
+                maxSpeed = mag(s.U[i]);
+                tMaxSpeed = t.value();
+            }
             // The lowest layer, away from the side walls: p + rho g y is
             // the bottom pressure
             if (s.x[i].y() < dr && s.x[i].x() > 0.25 && s.x[i].x() < 0.75)
@@ -95,16 +110,40 @@ TEST(wcsphFoam, hydrostaticTankStaysAtRestForTwoSeconds)
                 ++nBottom;
             }
         }
-        ASSERT_GT(nBottom, 0);
+        ASSERT_GT(nBottom, 0) << "t = " << t.name();
         pBottom /= nBottom;
-        // Bottom pressure within 3 % of rho g H (the acceptance figure).
-        // Speeds: the goal is 1 % of sqrt(g H), which the scheme does not
-        // reach yet (a slowly growing disturbance at the free-surface
-        // corners: 1.9 % measured at t = 2 s); 10 % bounds it as a test of
-        // stability until that is fixed
-        EXPECT_NEAR(pBottom/(rho*g*H), 1, 0.03) << "t = " << t;
-        EXPECT_LT(maxSpeed, 0.1*std::sqrt(g*H)) << "t = " << t;
+        // Bottom pressure within 3 % of rho g H (the acceptance figure)
+        EXPECT_NEAR(pBottom/(rho*g*H), 1, 0.03) << "t = " << t.name();
     }
+    EXPECT_GE(nTimes, 100);
+
+    // The acceptance figure: no particle faster than 1 % of sqrt(g H) at
+    // any written time up to 2 s. Measured 0.2 % (the start-up acoustic
+    // transient, t < 0.2 s) and 0.05 % at 2 s; the uncorrected density
+    // diffusion of eq. (6) (densityDiffusionHydrostatic no) grew to 3 %
+    // from the free-surface corners
+    EXPECT_LT(maxSpeed, 0.01*std::sqrt(g*H)) << "at t = " << tMaxSpeed;
+
+    // The probe on the bottom wall at mid-tank, every step
+    std::ifstream probe(dir/"postProcessing"/"bottom"/"0"/"p");
+    label nSteps = 0;
+    scalar worst = 0, tWorst = 0;
+    std::string line;
+    while (std::getline(probe, line))
+    {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream is(line);
+        scalar t, p;
+        is >> t >> p;
+        ++nSteps;
+        if (mag(p/(rho*g*H) - 1) > mag(worst))
+        {
+            worst = p/(rho*g*H) - 1;
+            tWorst = t;
+        }
+    }
+    EXPECT_GT(nSteps, 1000);
+    EXPECT_LT(mag(worst), 0.03) << "bottom probe at t = " << tWorst;
 }
 
 
