@@ -159,6 +159,26 @@ TEST(isphFoam, hydrostaticTankStaysAtRest)
     std::string out;
     ASSERT_EQ(mesh(dir, out), 0) << out;
     EXPECT_NE(out.find("No dummy particles"), std::string::npos) << out;
+    {
+        // boundaryMethod usaw: sphMesh seeds the nodes k dr (first row dr
+        // above the bottom, top row at H = 0.5) and writes no dummies
+        auto runTime = sphTest::makeTime(dir);
+        SPH::particles fluid(*runTime, "constant", "sphMesh/fluid", false);
+        fluid.read();
+        scalar yMin = GREAT, yMax = -GREAT, xMin = GREAT;
+        for (const vector2D& x : fluid.positions())
+        {
+            yMin = min(yMin, x.y());
+            yMax = max(yMax, x.y());
+            xMin = min(xMin, x.x());
+        }
+        EXPECT_NEAR(yMin, 0.02, 1e-12);
+        EXPECT_NEAR(xMin, 0.02, 1e-12);
+        EXPECT_NEAR(yMax, 0.5, 1e-12);
+        SPH::particles dummy(*runTime, "constant", "sphMesh/dummy", false);
+        dummy.read();
+        EXPECT_EQ(dummy.size(), 0);
+    }
     ASSERT_EQ(solve(dir, out), 0) << tail(out);
     EXPECT_NE(out.find("free surface        D{r} <= 1.5"), std::string::npos) << out;
     EXPECT_EQ(out.find("moving walls"), std::string::npos) << out;

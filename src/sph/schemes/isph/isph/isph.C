@@ -464,7 +464,13 @@ void Foam::SPH::isph::printStages() const
             << " there" << nl;
     }
     Info<< "    pressure Poisson    eqs. (41)-(44) for p + rho g z, wall"
-        << " condition (43); ";
+        << " condition (43), Laplacian "
+        << (
+               pressureGradient_ == pressureGradientType::renormalised
+             ? "(10) with the particle's own gradient"
+             : "(40)"
+           )
+        << nl << "                        ";
     pSolver_->write(Info);
     Info<< nl;
     if (!freeSurface_)
