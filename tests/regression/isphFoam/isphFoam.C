@@ -126,7 +126,7 @@ namespace
         std::ifstream is
         (
             std::string(SPHFOAM_SOURCE_DIR)
-          + "/../shared/reference/ghia1982_u_vertical_centreline.csv"
+          + "/etc/reference/ghia1982_u_vertical_centreline.csv"
         );
         std::string line;
         while (std::getline(is, line))

@@ -32,7 +32,7 @@ namespace
         std::string(SPHFOAM_BINARY_DIR) + "/applications/sphCompare";
 
     const std::string referenceDir =
-        std::string(SPHFOAM_SOURCE_DIR) + "/../shared/reference";
+        std::string(SPHFOAM_SOURCE_DIR) + "/etc/reference";
 
     const std::string header =
         "FoamFile { version 2.0; format ascii; class dictionary; object sphCompareDict; }\n";
