@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "isph.H"
+#include "fluidProperties.H"
 #include "Time.H"
 #include "dimensionedScalar.H"
 #include "uniformDimensionedFields.H"
@@ -48,38 +49,10 @@ namespace
 
 void Foam::SPH::isph::readPhysics()
 {
-    IOdictionary transport
-    (
-        IOobject
-        (
-            "transportProperties", runTime_.constant(), runTime_,
-            IOobject::MUST_READ, IOobject::NO_WRITE, false
-        )
-    );
-    rho0_ = dimensionedScalar("rho", dimDensity, transport).value();
-    nu_ = dimensionedScalar("nu", dimViscosity, transport).value();
-    if (!(rho0_ > 0) || !(nu_ >= 0))
-    {
-        FatalIOErrorInFunction(transport)
-            << "Expected rho > 0 and nu >= 0, found rho " << rho0_
-            << " and nu " << nu_ << exit(FatalIOError);
-    }
-
-    const uniformDimensionedVectorField g
-    (
-        IOobject
-        (
-            "g", runTime_.constant(), runTime_,
-            IOobject::MUST_READ, IOobject::NO_WRITE, false
-        )
-    );
-    if (g.dimensions() != dimAcceleration)
-    {
-        FatalErrorInFunction
-            << "constant/g has dimensions " << g.dimensions()
-            << ", expected " << dimAcceleration << exit(FatalError);
-    }
-    g_ = vector2D(g.value().x(), g.value().y());
+    const fluidProperties fluid(runTime_);
+    rho0_ = fluid.rho0;
+    nu_ = fluid.nu;
+    g_ = fluid.g;
 }
 
 
