@@ -115,27 +115,8 @@ Foam::SPH::fvSource::fvSource
     clockTime_(-1),
     lastPoints_()
 {
-    if (!isFile(caseDir_/"system"/"controlDict"))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Source " << name_ << ": " << caseDir_ << " is not a case"
-            << " (no system/controlDict)" << nl << exit(FatalIOError);
-    }
-    runTime_.reset
-    (
-        new Time
-        (
-            Time::controlDictName, caseDir_.path(), caseDir_.name(),
-            "system", "constant", false, false
-        )
-    );
-    selectTime(*runTime_, opts);
-
-    const word app
-    (
-        runTime_->controlDict().getOrDefault<word>("application", "icoFoam")
-    );
-    log_ = readPath("log", caseDir_, "log." + app);
+    runTime_ = openCase(caseDir_, opts);
+    log_ = runLog(*runTime_, caseDir_, "icoFoam");
     readRunTimes(log_, executionTime_, clockTime_);
 
     mesh_.reset

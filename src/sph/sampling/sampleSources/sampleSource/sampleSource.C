@@ -165,6 +165,46 @@ Foam::wordList Foam::SPH::sampleSource::namedComponents
 }
 
 
+Foam::autoPtr<Foam::Time> Foam::SPH::sampleSource::openCase
+(
+    const fileName& caseDir,
+    const options& opts
+) const
+{
+    if (!isFile(caseDir/"system"/"controlDict"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Source " << name_ << ": " << caseDir << " is not a case"
+            << " (no system/controlDict)" << nl << exit(FatalIOError);
+    }
+    autoPtr<Time> runTime
+    (
+        new Time
+        (
+            Time::controlDictName, caseDir.path(), caseDir.name(),
+            "system", "constant", false, false
+        )
+    );
+    selectTime(*runTime, opts);
+    return runTime;
+}
+
+
+Foam::fileName Foam::SPH::sampleSource::runLog
+(
+    const Time& runTime,
+    const fileName& caseDir,
+    const word& defaultApp
+) const
+{
+    const word app
+    (
+        runTime.controlDict().getOrDefault<word>("application", defaultApp)
+    );
+    return readPath("log", caseDir, "log." + app);
+}
+
+
 void Foam::SPH::sampleSource::selectTime
 (
     Time& runTime,
