@@ -83,6 +83,16 @@ void Foam::SPH::isph::readSchemes()
             << " fluid)" << exit(FatalIOError);
     }
     minDeltaTFraction_ = schemes_.getOrDefault<scalar>("minDeltaTFraction", 1e-3);
+    // Eq. (39)'s distance of a particle about to hit a wall
+    minWallDistance_ =
+        schemes_.getOrDefault<scalar>("minWallDistance", kernel_->support()/8);
+    if (!(minWallDistance_ >= 0 && minWallDistance_ < dr_))
+    {
+        FatalIOErrorInFunction(schemes_)
+            << "Entry minWallDistance " << minWallDistance_
+            << ": expected 0 (off) or a distance below dr = " << dr_
+            << exit(FatalIOError);
+    }
 
     CCFL_ = runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2);
     if (!(CCFL_ > 0))
@@ -321,6 +331,7 @@ Foam::SPH::isph::isph(Time& runTime)
     lastDeltaTStart_(-1),
     nSurface_(0),
     maxSpeed_(0), maxAccel_(0), lastDeltaT_(-1), maxShift_(0),
+    nHeld_(0), nHeldTotal_(0),
     deltaT0_(-1),
     nSteps_(0),
     nSolverIterations_(0)
@@ -471,6 +482,13 @@ void Foam::SPH::isph::printStages() const
             << (freeSurface_ ? ", off within h q_max/2 of the free surface" : "")
             << nl;
     }
+    if (minWallDistance_ > 0)
+    {
+        Info<< "    wall distance       particles held " << minWallDistance_
+            << " (" << minWallDistance_/dr_ << " dr) off the walls, without"
+            << " velocity towards them (minWallDistance; beyond 000_...)"
+            << nl;
+    }
     Info<< "    checks              NaN/Inf, particles leaving the domain"
         << (crossing_ ? " or crossing a wall" : "") << ", deltaT below "
         << minDeltaTFraction_ << " of the first" << nl
@@ -533,6 +551,10 @@ void Foam::SPH::isph::printStep() const
     if (shifting_)
     {
         Info<< "Largest shift: " << maxShift_/dr_ << " dr" << nl;
+    }
+    if (nHeld_ > 0)
+    {
+        Info<< "Particles held off the walls: " << nHeld_ << nl;
     }
 }
 
@@ -608,6 +630,11 @@ void Foam::SPH::isph::printTimes() const
         << "Steps " << nSteps_ << ", pressure solver iterations per step "
         << scalar(nSolverIterations_)/nSteps_ << ", particle-steps per second "
         << nFluid_*nSteps_/total << nl;
+    if (nHeldTotal_ > 0)
+    {
+        Info<< "Particles held off the walls (minWallDistance): "
+            << nHeldTotal_ << " in " << nSteps_ << " steps" << nl;
+    }
 }
 
 

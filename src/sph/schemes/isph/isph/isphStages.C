@@ -229,6 +229,60 @@ void Foam::SPH::isph::shift()
 }
 
 
+Foam::label Foam::SPH::isph::holdOffWalls()
+{
+    if (minWallDistance_ <= 0)
+    {
+        return 0;
+    }
+    const label* off = usaw_->offsets().cdata();
+    const label* seg = usaw_->segments().cdata();
+    const labelPair* ends = usaw_->segmentParticles().cdata();
+    const vector2D* normal = usaw_->segmentNormals().cdata();
+    const vector2D* x0 = xStart_.cdata();
+    vector2D* x = parts_.positions().data();
+    vector2D* U = parts_.field<vector2D>("U").data();
+    const scalar dMin = minWallDistance_;
+
+    // The segments within reach of the particle's last neighbour search;
+    // a segment's vertex ends are left to its neighbours (a particle by a
+    // corner sees both walls' interiors), as is one that was behind the
+    // segment's line at the start of the step (the far side of a plate)
+    label nHeld = 0;
+    #pragma omp parallel for schedule(static) reduction(+:nHeld)
+    for (label i = 0; i < nFluid_; ++i)
+    {
+        bool held = false;
+        for (label k = off[i]; k < off[i + 1]; ++k)
+        {
+            const label s = seg[k];
+            const vector2D& n = normal[s];
+            const vector2D& a = x[ends[s].first()];
+            const vector2D e(x[ends[s].second()] - a);
+            const scalar t = ((x[i] - a) & e)/magSqr(e);
+            const scalar d = (x[i] - a) & n;
+            if (t <= 0 || t >= 1 || d >= dMin || ((x0[i] - a) & n) < 0)
+            {
+                continue;
+            }
+            x[i] += (dMin - d)*n;
+            const vector2D uWall
+            (
+                (1 - t)*U[ends[s].first()] + t*U[ends[s].second()]
+            );
+            const scalar un = (U[i] - uWall) & n;
+            if (un < 0)
+            {
+                U[i] -= un*n;
+            }
+            held = true;
+        }
+        nHeld += held;
+    }
+    return nHeld;
+}
+
+
 Foam::label Foam::SPH::isph::findBadParticle(word& what) const
 {
     const vector2D* x = parts_.positions().cdata();
@@ -389,6 +443,8 @@ void Foam::SPH::isph::evolve()
     {
         shift();
     }
+    nHeld_ = holdOffWalls();
+    nHeldTotal_ += nHeld_;
 
     // The acceleration that limits the next step, eq. (49)
     scalar maxA2 = 0, maxU2 = 0;
