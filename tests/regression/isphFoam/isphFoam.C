@@ -273,6 +273,43 @@ TEST(isphFoam, cavityRe1000KeepsItsParticlesOffTheLid)
 }
 
 
+TEST(isphFoam, startsFromAVelocityMappedFromACoarserRun)
+{
+    // sphMapFields writes 0/U nonuniform, one vector per fluid particle of
+    // the finer case, sampled from the coarse run's last time; isphFoam
+    // starts from it (the lid then slides at once, so the flow goes on)
+    const fileName coarse = cavityCase("isphMapCoarse", "10", "1");
+    setEntry(coarse/"system"/"controlDict", "writeInterval", "1");
+    std::string out;
+    ASSERT_EQ(mesh(coarse, out), 0) << out;
+    ASSERT_EQ(solve(coarse, out), 0) << tail(out);
+
+    const fileName fine = cavityCase("isphMapFine", "20", "0.02");
+    ASSERT_EQ(mesh(fine, out), 0) << out;
+    ASSERT_EQ(run(bin + "sphMapFields -case " + fine + " " + coarse, out), 0) << out;
+    EXPECT_NE(out.find("Mapped U of 361 fluid particles"), std::string::npos) << out;
+
+    ASSERT_EQ(solve(fine, out), 0) << tail(out);
+    EXPECT_NE(out.find("Initial velocity per particle from"), std::string::npos) << out;
+
+    // Fluid in the middle of the coarse run's vortex moves from the start
+    const state c = readState(coarse, "1");
+    scalar maxCoarse = 0;
+    forAll(c.U, i) if (c.type[i] == 0) maxCoarse = max(maxCoarse, mag(c.U[i]));
+    EXPECT_GT(maxCoarse, 0.1);
+
+    // A list of the wrong size names the file and what it expected
+    sphTest::writeFile
+    (
+        fine/"0"/"U",
+        "FoamFile { version 2.0; format ascii; class dictionary; object U; }\n"
+        "internalField nonuniform List<vector> 2((0 0 0) (0 0 0));\n"
+    );
+    EXPECT_NE(solve(fine, out), 0);
+    EXPECT_NE(out.find("one per fluid particle"), std::string::npos) << tail(out);
+}
+
+
 TEST(isphFoam, restartIsExactToTheBit)
 {
     // A free surface (tank, with water set moving), a moving lid (cavity,

@@ -136,30 +136,53 @@ void Foam::SPH::isph::readInitialVelocity()
             IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
         )
     );
-    vector2D U0(vector2D::zero);
-    if (Udict.found("internalField"))
-    {
-        ITstream& is = Udict.lookup("internalField");
-        const word kind(is);
-        if (kind != "uniform")
-        {
-            FatalIOErrorInFunction(is)
-                << "Expected 'internalField uniform (Ux Uy Uz);', found "
-                << kind << exit(FatalIOError);
-        }
-        const vector v(is);
-        U0 = vector2D(v.x(), v.y());
-        Info<< "Initial velocity " << U0 << " from " << Udict.objectPath() << nl;
-    }
-    else
+    vector2DField& U = parts_.field<vector2D>("U");
+    if (!Udict.found("internalField"))
     {
         Info<< "No " << runTime_.timeName()/"U"
             << ": the fluid starts at rest" << nl;
+        for (label i = 0; i < nFluid_; ++i)
+        {
+            U[i] = vector2D::zero;
+        }
+        return;
     }
-    vector2DField& U = parts_.field<vector2D>("U");
-    for (label i = 0; i < nFluid_; ++i)
+
+    // As a finite-volume field: uniform, or one value per fluid particle
+    // in the order of constant/sphMesh/fluid (what sphMapFields writes)
+    ITstream& is = Udict.lookup("internalField");
+    const word kind(is);
+    if (kind == "uniform")
     {
-        U[i] = U0;
+        const vector v(is);
+        for (label i = 0; i < nFluid_; ++i)
+        {
+            U[i] = vector2D(v.x(), v.y());
+        }
+        Info<< "Initial velocity " << U[0] << " from " << Udict.objectPath() << nl;
+    }
+    else if (kind == "nonuniform")
+    {
+        const vectorField values(is);
+        if (values.size() != nFluid_)
+        {
+            FatalIOErrorInFunction(is)
+                << "internalField nonuniform holds " << values.size()
+                << " vectors: expected one per fluid particle of"
+                << " constant/sphMesh/fluid, " << nFluid_ << exit(FatalIOError);
+        }
+        forAll(values, i)
+        {
+            U[i] = vector2D(values[i].x(), values[i].y());
+        }
+        Info<< "Initial velocity per particle from " << Udict.objectPath() << nl;
+    }
+    else
+    {
+        FatalIOErrorInFunction(is)
+            << "Expected 'internalField uniform (Ux Uy Uz);' or"
+            << " 'internalField nonuniform List<vector> N (...);', found "
+            << kind << exit(FatalIOError);
     }
 }
 
