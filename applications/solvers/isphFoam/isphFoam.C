@@ -21,10 +21,8 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
-#include "Time.H"
-#include "sigFpe.H"
 #include "isph.H"
-#include "sphFoamVersion.H"
+#include "timeLoop.H"
 
 using namespace Foam;
 
@@ -40,64 +38,7 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    // NaN and Inf are found after every step, reported with the particle
-    // and the last good state written, so OpenFOAM's trap (which would kill
-    // the run without a word about where) is switched off
-    sigFpe::unset(false);
-
-    Info<< "sphFoam " << SPH::version << nl
-        << "Floating-point exceptions are not trapped: NaN and Inf are checked"
-        << " after every time step" << nl << endl;
-
-    SPH::isph model(runTime);
-    model.printStages();
-
-    const bool adjustTimeStep =
-        runTime.controlDict().getOrDefault<bool>("adjustTimeStep", false);
-    const label logInterval =
-        max(label(1), runTime.controlDict().getOrDefault<label>("logInterval", 1));
-
-    if (runTime.timeIndex() == 0 || !isDir(runTime.path()/"VTK"))
-    {
-        model.writeVTK();
-    }
-
-    Info<< "Starting time loop" << nl << endl;
-
-    while (runTime.run())
-    {
-        if (adjustTimeStep)
-        {
-            runTime.setDeltaT(model.stableDeltaT());
-        }
-        ++runTime;
-
-        const bool log = runTime.timeIndex() % logInterval == 0 || runTime.writeTime();
-        if (log)
-        {
-            Info<< "deltaT = " << runTime.deltaTValue() << nl
-                << "Time = " << runTime.timeName() << nl << nl;
-        }
-
-        model.evolve();
-
-        runTime.write();
-        if (runTime.writeTime())
-        {
-            model.write();
-        }
-
-        if (log)
-        {
-            model.printStep();
-            Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
-                << "  ClockTime = " << runTime.elapsedClockTime() << " s"
-                << nl << endl;
-        }
-    }
-
-    model.printTimes();
-    Info<< "End" << nl << endl;
+    SPH::timeLoop<SPH::isph>(runTime);
 
     return 0;
 }

@@ -18,10 +18,8 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
-#include "Time.H"
-#include "sigFpe.H"
 #include "wcsph.H"
-#include "sphFoamVersion.H"
+#include "timeLoop.H"
 
 using namespace Foam;
 
@@ -37,70 +35,7 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    // NaN and Inf are found after every step, reported with the particle
-    // and the last good state written, so OpenFOAM's trap (which would kill
-    // the run without a word about where) is switched off
-    sigFpe::unset(false);
-
-    Info<< "sphFoam " << SPH::version << nl
-        << "Floating-point exceptions are not trapped: NaN and Inf are checked"
-        << " after every time step" << nl << endl;
-
-    SPH::wcsph model(runTime);
-    model.printStages();
-
-    const bool adjustTimeStep =
-        runTime.controlDict().getOrDefault<bool>("adjustTimeStep", false);
-    const label logInterval =
-        max(label(1), runTime.controlDict().getOrDefault<label>("logInterval", 1));
-
-    if (runTime.timeIndex() == 0 || !isDir(runTime.path()/"VTK"))
-    {
-        model.writeVTK();
-    }
-
-    Info<< "Starting time loop" << nl << endl;
-
-    while (runTime.run())
-    {
-        if (adjustTimeStep)
-        {
-            runTime.setDeltaT(model.stableDeltaT());
-        }
-        ++runTime;
-
-        const bool log = runTime.timeIndex() % logInterval == 0 || runTime.writeTime();
-        if (log)
-        {
-            Info<< "deltaT = " << runTime.deltaTValue() << nl
-                << "Time = " << runTime.timeName() << nl;
-        }
-
-        model.evolve();
-
-        runTime.write();
-        if (runTime.writeTime())
-        {
-            model.writeVTK();
-        }
-
-        if (log)
-        {
-            const label nBounced = model.bouncedSinceLastCall();
-            if (nBounced)
-            {
-                Info<< "Wall bounces since the last report: " << nBounced << nl;
-            }
-            Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
-                << "  ClockTime = " << runTime.elapsedClockTime() << " s"
-                << nl << endl;
-        }
-    }
-
-    model.printTimes();
-    Info<< "Fluid particles " << model.nFluid() << ", total mass "
-        << model.totalMass() << " kg/m" << nl
-        << "End" << nl << endl;
+    SPH::timeLoop<SPH::wcsph>(runTime);
 
     return 0;
 }

@@ -705,22 +705,28 @@ void Foam::SPH::wcsph::writeVTK() const
 void Foam::SPH::wcsph::printTimes() const
 {
     const scalar total = timeNeighbours_ + timeInteractions_ + timeIntegration_;
-    if (total <= 0) return;
-    Info<< "Time in the steps: neighbour search " << timeNeighbours_ << " s ("
-        << label(100*timeNeighbours_/total + 0.5) << "%), interactions "
-        << timeInteractions_ << " s (" << label(100*timeInteractions_/total + 0.5)
-        << "%), integration " << timeIntegration_ << " s ("
-        << label(100*timeIntegration_/total + 0.5) << "%)" << nl
-        << "Neighbour lists: " << nListBuilds_ << " built, "
-        << nListRefreshes_ << " refreshed" << nl;
+    if (total > 0)
+    {
+        Info<< "Time in the steps: neighbour search " << timeNeighbours_ << " s ("
+            << label(100*timeNeighbours_/total + 0.5) << "%), interactions "
+            << timeInteractions_ << " s (" << label(100*timeInteractions_/total + 0.5)
+            << "%), integration " << timeIntegration_ << " s ("
+            << label(100*timeIntegration_/total + 0.5) << "%)" << nl
+            << "Neighbour lists: " << nListBuilds_ << " built, "
+            << nListRefreshes_ << " refreshed" << nl;
+    }
+    Info<< "Fluid particles " << nFluid_ << ", total mass " << totalMass()
+        << " kg/m" << nl;
 }
 
 
-Foam::label Foam::SPH::wcsph::bouncedSinceLastCall()
+void Foam::SPH::wcsph::printStep()
 {
-    const label n = nBounced_;
+    if (nBounced_)
+    {
+        Info<< "Wall bounces since the last report: " << nBounced_ << nl;
+    }
     nBounced_ = 0;
-    return n;
 }
 
 
