@@ -95,7 +95,7 @@ TEST_F(linearSolvers, everySolverAndPreconditionerSolvesBothSystems)
         const SPH::vectorN exact = direct(A, b);
         for (const char* solver : {"BiCGStab", "GMRES"})
         {
-            for (const char* pc : {"none", "diagonal", "ILU0", "ILUT"})
+            for (const char* pc : {"none", "diagonal", "ILU0", "ILUT", "BoomerAMG"})
             {
                 const auto s = makeSolver
                 (
@@ -140,6 +140,134 @@ TEST_F(linearSolvers, preconditionersCutTheIterations)
         << n[1] << ' ' << n[2] << std::endl;
     EXPECT_LT(n[2], n[1]);
     EXPECT_LT(n[2], n[0]/2);
+}
+
+
+TEST_F(linearSolvers, BoomerAMGIterationsHardlyGrowWithTheGrid)
+{
+    // ILU(0) iterations grow like the grid's side; one multigrid cycle
+    // removes every wavelength, so its count stays nearly flat
+    label nIlu[2], nAmg[2];
+    const label sides[2] = {40, 160};
+    for (int k = 0; k < 2; ++k)
+    {
+        const SPH::sparseMatrix A = gridMatrix(sides[k], 50);
+        const SPH::vectorN b = rhs(A.rows());
+        for (const char* pc : {"ILU0", "BoomerAMG"})
+        {
+            const auto s = makeSolver
+            (
+                std::string("solver BiCGStab; preconditioner ") + pc
+              + "; tolerance 1e-8;"
+            );
+            SPH::vectorN x = SPH::vectorN::Zero(A.rows());
+            const solverPerformance perf = s->solve(A, b, x);
+            EXPECT_TRUE(perf.converged()) << pc << " on " << sides[k];
+            EXPECT_LT((b - A*x).norm()/b.norm(), 1e-8) << pc;
+            (pc[0] == 'I' ? nIlu : nAmg)[k] = perf.nIterations();
+        }
+    }
+    std::cout << "    BiCGStab iterations on 40^2 and 160^2: ILU0 " << nIlu[0]
+        << ' ' << nIlu[1] << ", BoomerAMG " << nAmg[0] << ' ' << nAmg[1]
+        << std::endl;
+    EXPECT_GT(nIlu[1], 2*nIlu[0]);
+    EXPECT_LE(nAmg[1], nAmg[0] + 3);
+    EXPECT_LT(nAmg[1], nIlu[1]/4);
+}
+
+
+TEST_F(linearSolvers, BoomerAMGKeepsItsHierarchyForReuseSolves)
+{
+    // A matrix that drifts a little from solve to solve, as the particles'
+    // does from step to step: the old hierarchy still preconditions it,
+    // and every answer is as accurate as with a new one
+    const auto s = makeSolver
+    (
+        "solver BiCGStab; preconditioner BoomerAMG; tolerance 1e-10; reuse 4;"
+    );
+    const SPH::sparseMatrix A0 = gridMatrix(40, 20);
+    const SPH::vectorN b = rhs(A0.rows());
+    for (label k = 0; k < 9; ++k)
+    {
+        const SPH::sparseMatrix A = gridMatrix(40, 20 + 2*k);
+        SPH::vectorN x = SPH::vectorN::Zero(A.rows());
+        const solverPerformance perf = s->solve(A, b, x);
+        EXPECT_TRUE(perf.converged()) << k;
+        EXPECT_LT((b - A*x).norm()/b.norm(), 1e-10) << k;
+        EXPECT_LT(perf.nIterations(), 15) << k;
+    }
+    EXPECT_EQ(s->nPreconditionerBuilds(), 3);     // solves 0, 4 and 8
+
+    // A restart time (expire) and a new size each build anew
+    SPH::vectorN x = SPH::vectorN::Zero(A0.rows());
+    s->expirePreconditioner();
+    s->solve(A0, b, x);
+    EXPECT_EQ(s->nPreconditionerBuilds(), 4);
+    const SPH::sparseMatrix B = gridMatrix(30, 20);
+    SPH::vectorN y = SPH::vectorN::Zero(B.rows());
+    EXPECT_TRUE(s->solve(B, rhs(B.rows()), y).converged());
+    EXPECT_EQ(s->nPreconditionerBuilds(), 5);
+
+    // Other preconditioners keep nothing
+    EXPECT_EQ
+    (
+        makeSolver("solver BiCGStab; preconditioner ILU0; tolerance 1e-8;")
+            ->nPreconditionerBuilds(),
+        0
+    );
+}
+
+
+TEST_F(linearSolvers, BoomerAMGControlsAreWrittenAndChecked)
+{
+    const auto s = makeSolver
+    (
+        "solver GMRES; preconditioner BoomerAMG; tolerance 1e-8;"
+        " coarsening PMIS; smoother l1GaussSeidel; nSweeps 2;"
+    );
+    OStringStream settings;
+    s->write(settings);
+    EXPECT_NE(settings.str().find("BoomerAMG (PMIS, extendedI interpolation,"
+        " l1GaussSeidel x2, strongThreshold 0.5"), std::string::npos)
+        << settings.str();
+
+    const SPH::sparseMatrix A = gridMatrix(30, 0);
+    const SPH::vectorN b = rhs(A.rows());
+    SPH::vectorN x = SPH::vectorN::Zero(A.rows());
+    EXPECT_TRUE(s->solve(A, b, x).converged());
+
+    for
+    (
+        const char* bad :
+        {
+            "strongThreshold 1.5;", "nSweeps 0;", "coarsening CLJP;",
+            "smoother chebyshev;", "aggressiveLevels -1;", "reuse 0;"
+        }
+    )
+    {
+        const std::string text(bad);
+        const std::string entry(text.substr(0, text.find(' ')));
+        const std::string value(text.substr(text.find(' ') + 1, text.size() - text.find(' ') - 2));
+        try
+        {
+            makeSolver
+            (
+                std::string("solver BiCGStab; preconditioner BoomerAMG;"
+                " tolerance 1e-8; ") + bad
+            );
+            ADD_FAILURE() << "no error for " << bad;
+        }
+        catch (const Foam::error& err)
+        {
+            // The entry's name or, from an Enum, the value it refused
+            const std::string msg(err.message());
+            EXPECT_TRUE
+            (
+                msg.find(entry) != std::string::npos
+             || msg.find(value) != std::string::npos
+            ) << bad << ": " << msg;
+        }
+    }
 }
 
 
@@ -324,7 +452,7 @@ TEST_F(linearSolvers, unknownPreconditionerIsAnIOErrorListingTheValidOnes)
     catch (const Foam::error& err)
     {
         const std::string msg(err.message());
-        for (const char* s : {"DIC", "none", "diagonal", "ILU0", "ILUT"})
+        for (const char* s : {"DIC", "none", "diagonal", "ILU0", "ILUT", "BoomerAMG"})
         {
             EXPECT_NE(msg.find(s), std::string::npos) << msg;
         }

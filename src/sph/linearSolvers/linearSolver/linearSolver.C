@@ -22,6 +22,7 @@ Foam::SPH::linearSolver::preconditionerTypeNames
     { preconditionerType::diagonal, "diagonal" },
     { preconditionerType::ILU0, "ILU0" },
     { preconditionerType::ILUT, "ILUT" },
+    { preconditionerType::BoomerAMG, "BoomerAMG" },
 });
 
 
@@ -40,7 +41,9 @@ Foam::SPH::linearSolver::linearSolver
     relTol_(dict.getOrDefault<scalar>("relTol", 0)),
     maxIter_(dict.getOrDefault<label>("maxIter", 1000)),
     dropTolerance_(dict.getOrDefault<scalar>("dropTolerance", 1e-4)),
-    fillFactor_(dict.getOrDefault<label>("fillFactor", 10))
+    fillFactor_(dict.getOrDefault<label>("fillFactor", 10)),
+    amgControls_(),
+    amgHierarchy_()
 {
     // Each entry's own stream: the error names its line
     if (!(tolerance_ > 0))
@@ -76,6 +79,11 @@ Foam::SPH::linearSolver::linearSolver
                 << exit(FatalIOError);
         }
     }
+    if (preconditioner_ == preconditionerType::BoomerAMG)
+    {
+        amgControls_ = BoomerAMG::controls(dict);
+        amgHierarchy_ = BoomerAMG::newHierarchy();
+    }
 }
 
 
@@ -90,8 +98,28 @@ void Foam::SPH::linearSolver::write(Ostream& os) const
         os  << " (dropTolerance " << dropTolerance_ << ", fillFactor "
             << fillFactor_ << ")";
     }
+    if (preconditioner_ == preconditionerType::BoomerAMG)
+    {
+        os  << ": ";
+        amgControls_.write(os);
+    }
     os  << ", tolerance " << tolerance_ << ", relTol " << relTol_
         << ", maxIter " << maxIter_;
+}
+
+
+void Foam::SPH::linearSolver::expirePreconditioner() const
+{
+    if (amgHierarchy_)
+    {
+        BoomerAMG::expire(*amgHierarchy_);
+    }
+}
+
+
+Foam::label Foam::SPH::linearSolver::nPreconditionerBuilds() const
+{
+    return amgHierarchy_ ? BoomerAMG::nBuilds(*amgHierarchy_) : 0;
 }
 
 

@@ -117,6 +117,16 @@ Foam::solverPerformance Foam::SPH::linearSolver::solveWith
             configure(s);
             return run(s, relativeToStart, A, b, x);
         }
+        case preconditionerType::BoomerAMG:
+        {
+            Solver<sparseMatrix, BoomerAMG> s;
+            s.preconditioner().setControls(amgControls_);
+            s.preconditioner().attach(amgHierarchy_);
+            configure(s);
+            const solverPerformance perf = run(s, relativeToStart, A, b, x);
+            BoomerAMG::record(*amgHierarchy_, perf.nIterations());
+            return perf;
+        }
     }
     return solverPerformance();
 }

@@ -586,6 +586,9 @@ void Foam::SPH::isph::write() const
 {
     writeVTK();
     writeState();
+    // A restart from this time builds a new multigrid hierarchy: so does
+    // the run going on
+    pSolver_->expirePreconditioner();
 }
 
 
@@ -653,6 +656,12 @@ void Foam::SPH::isph::printTimes() const
         << "Steps " << nSteps_ << ", pressure solver iterations per step "
         << scalar(nSolverIterations_)/nSteps_ << ", particle-steps per second "
         << nFluid_*nSteps_/total << nl;
+    if (pSolver_->nPreconditionerBuilds() > 0)
+    {
+        Info<< "Multigrid hierarchies built: "
+            << pSolver_->nPreconditionerBuilds() << " for " << nSteps_
+            << " solves" << nl;
+    }
     if (nHeldTotal_ > 0)
     {
         Info<< "Particles held off the walls (minWallDistance): "
