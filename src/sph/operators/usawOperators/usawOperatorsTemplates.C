@@ -18,14 +18,16 @@ namespace detail
 //- result_a = (sum_b pair(a, b, r_ab, |r_ab|) + sum_s wall(a, s, grad
 //- gamma_as, d_as))/gamma_a for every target a: the shape shared by all
 //- operators of (5)-(10), (15), (37). The terms are inlined lambdas.
-template<class Type, class PairTerm, class WallTerm>
+//- ... and result_a = finish(a, that sum) where a result is made from it
+template<class Type, class PairTerm, class WallTerm, class Result, class Finish>
 inline void sumOverNeighboursAndWalls
 (
     const neighbourList& nbrs,
     const usawWalls& walls,
     const PairTerm& pair,
     const WallTerm& wall,
-    UList<Type>& result
+    UList<Result>& result,
+    const Finish& finish
 )
 {
     const label n = nbrs.size();
@@ -40,7 +42,7 @@ inline void sumOverNeighboursAndWalls
     const vector2D* gradGammaAs = walls.gradGammaAs().cdata();
     const scalar* dAs = walls.distances().cdata();
 
-    Type* res = result.data();
+    Result* res = result.data();
 
     #pragma omp parallel for schedule(static)
     for (label a = 0; a < n; ++a)
@@ -54,8 +56,26 @@ inline void sumOverNeighboursAndWalls
         {
             sum += wall(a, seg[k], gradGammaAs[k], dAs[k]);
         }
-        res[a] = sum/gamma[a];
+        res[a] = finish(a, sum/gamma[a]);
     }
+}
+
+
+template<class Type, class PairTerm, class WallTerm>
+inline void sumOverNeighboursAndWalls
+(
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const PairTerm& pair,
+    const WallTerm& wall,
+    UList<Type>& result
+)
+{
+    sumOverNeighboursAndWalls<Type>
+    (
+        nbrs, walls, pair, wall, result,
+        [](const label, const Type& sum) { return sum; }
+    );
 }
 
 
@@ -178,6 +198,122 @@ void Foam::SPH::usaw::gradMinus
             return gradGammaAs*(U[i] - detail::segmentValue(ends, U, s));
         },
         result
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::renormalisation
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const UList<vector2D>& x,
+    const scalar minDet,
+    UList<tensor2D>& result
+)
+{
+    checkOperands("renormalisation", nbrs, walls, V.size(), {x.size()}, -1, result.size());
+    const scalar* v = V.cdata();
+    const vector2D* X = x.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    // G-{r} of eq. (8) with the minimum-image r_ab, inverted: a particle
+    // whose neighbours do not span the plane keeps the identity
+    detail::sumOverNeighboursAndWalls<tensor2D>
+    (
+        nbrs,
+        walls,
+        [&](const label, const label j, const vector2D& rij, const scalar r)
+        {
+            return -v[j]*(K.gradW(rij, r)*rij);
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return gradGammaAs*(X[i] - detail::segmentValue(ends, X, s));
+        },
+        result,
+        [minDet](const label, const tensor2D& M)
+        {
+            return det(M) > minDet ? inv(M) : tensor2D(tensor2D::I);
+        }
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::gradMinus
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const UList<tensor2D>& R,
+    const scalarUList& A,
+    UList<vector2D>& result
+)
+{
+    checkOperands("gradMinus", nbrs, walls, V.size(), {A.size()}, -1, result.size());
+    checkOperands("gradMinus", nbrs, walls, V.size(), {}, -1, R.size());
+    const scalar* v = V.cdata();
+    const scalar* a = A.cdata();
+    const tensor2D* Ra = R.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    // R . eq. (8)
+    detail::sumOverNeighboursAndWalls<vector2D>
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D& rij, const scalar r)
+        {
+            return -v[j]*(a[i] - a[j])*K.gradW(rij, r);
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return (a[i] - detail::segmentValue(ends, a, s))*gradGammaAs;
+        },
+        result,
+        [Ra](const label i, const vector2D& g) { return Ra[i] & g; }
+    );
+}
+
+
+template<class Kernel>
+void Foam::SPH::usaw::div
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const UList<tensor2D>& R,
+    const UList<vector2D>& u,
+    UList<scalar>& result
+)
+{
+    checkOperands("div", nbrs, walls, V.size(), {u.size()}, -1, result.size());
+    checkOperands("div", nbrs, walls, V.size(), {}, -1, R.size());
+    const scalar* v = V.cdata();
+    const vector2D* U = u.cdata();
+    const tensor2D* Ra = R.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    // tr(R . G-{u}), G-{u} of eq. (8) as for the vector gradMinus
+    detail::sumOverNeighboursAndWalls<tensor2D>
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D& rij, const scalar r)
+        {
+            return -v[j]*(K.gradW(rij, r)*(U[i] - U[j]));
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return gradGammaAs*(U[i] - detail::segmentValue(ends, U, s));
+        },
+        result,
+        [Ra](const label i, const tensor2D& G) { return tr(Ra[i] & G); }
     );
 }
 

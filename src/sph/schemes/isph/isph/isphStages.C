@@ -150,21 +150,18 @@ void Foam::SPH::isph::detectFreeSurface(const scalar dt)
 
 void Foam::SPH::isph::renormalise()
 {
-    const auto start = now();
-    dispatch(*kernel_, [&](const auto& K)
-    {
-        usaw::gradMinus(K, nbrs_, *usaw_, V_, parts_.positions(), R_);
-    });
-
-    // R = G-{r}^-1: OpenFOAM's (grad r)_ij = d_i r_j, so G-{p} = G-{r} .
-    // grad p for a linear p, and R . G-{p} is exact for it, also where the
+    // R = G-{r}^-1: R . G-{p} is exact for a linear p, also where the
     // kernel is cut by the free surface. A particle with too few
     // neighbours to span the plane (a droplet, a jet one particle thick)
     // keeps G-{p}.
-    for (tensor2D& M : R_)
+    const auto start = now();
+    dispatch(*kernel_, [&](const auto& K)
     {
-        M = det(M) > minMomentDet_ ? inv(M) : tensor2D::I;
-    }
+        usaw::renormalisation
+        (
+            K, nbrs_, *usaw_, V_, parts_.positions(), minMomentDet_, R_
+        );
+    });
     times_.operators += secondsSince(start);
 }
 
