@@ -92,6 +92,77 @@ inline Type segmentValue
     return 0.5*(A[ends[s].first()] + A[ends[s].second()]);
 }
 
+
+//- finish(a, G-_a{A}), eq. (8) for a scalar
+template<class Kernel, class Result, class Finish>
+inline void gradMinusThen
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const scalarUList& A,
+    UList<Result>& result,
+    const Finish& finish
+)
+{
+    const scalar* v = V.cdata();
+    const scalar* a = A.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    sumOverNeighboursAndWalls<vector2D>
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D& rij, const scalar r)
+        {
+            return -v[j]*(a[i] - a[j])*K.gradW(rij, r);
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return (a[i] - segmentValue(ends, a, s))*gradGammaAs;
+        },
+        result,
+        finish
+    );
+}
+
+
+//- finish(a, G-_a{u}), eq. (8) for a vector with grad w (x) u_ab:
+//- OpenFOAM's (grad u)_ij = d u_j/d x_i
+template<class Kernel, class Result, class Finish>
+inline void vectorGradMinusThen
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const UList<vector2D>& u,
+    UList<Result>& result,
+    const Finish& finish
+)
+{
+    const scalar* v = V.cdata();
+    const vector2D* U = u.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    sumOverNeighboursAndWalls<tensor2D>
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D& rij, const scalar r)
+        {
+            return -v[j]*(K.gradW(rij, r)*(U[i] - U[j]));
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return gradGammaAs*(U[i] - segmentValue(ends, U, s));
+        },
+        result,
+        finish
+    );
+}
+
 } // End namespace detail
 } // End namespace usaw
 } // End namespace SPH
@@ -146,24 +217,10 @@ void Foam::SPH::usaw::gradMinus
 )
 {
     checkOperands("gradMinus", nbrs, walls, V.size(), {A.size()}, -1, result.size());
-    const scalar* v = V.cdata();
-    const scalar* a = A.cdata();
-    const labelPair* ends = walls.segmentParticles().cdata();
-
-    // Eq. (8)
-    detail::sumOverNeighboursAndWalls
+    detail::gradMinusThen
     (
-        nbrs,
-        walls,
-        [&](const label i, const label j, const vector2D& rij, const scalar r)
-        {
-            return -v[j]*(a[i] - a[j])*K.gradW(rij, r);
-        },
-        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
-        {
-            return (a[i] - detail::segmentValue(ends, a, s))*gradGammaAs;
-        },
-        result
+        K, nbrs, walls, V, A, result,
+        [](const label, const vector2D& g) { return g; }
     );
 }
 
@@ -180,24 +237,10 @@ void Foam::SPH::usaw::gradMinus
 )
 {
     checkOperands("gradMinus", nbrs, walls, V.size(), {u.size()}, -1, result.size());
-    const scalar* v = V.cdata();
-    const vector2D* U = u.cdata();
-    const labelPair* ends = walls.segmentParticles().cdata();
-
-    // Eq. (8) with grad w (x) u_ab: OpenFOAM's (grad u)_ij = d u_j/d x_i
-    detail::sumOverNeighboursAndWalls
+    detail::vectorGradMinusThen
     (
-        nbrs,
-        walls,
-        [&](const label i, const label j, const vector2D& rij, const scalar r)
-        {
-            return -v[j]*(K.gradW(rij, r)*(U[i] - U[j]));
-        },
-        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
-        {
-            return gradGammaAs*(U[i] - detail::segmentValue(ends, U, s));
-        },
-        result
+        K, nbrs, walls, V, u, result,
+        [](const label, const tensor2D& G) { return G; }
     );
 }
 
@@ -256,25 +299,12 @@ void Foam::SPH::usaw::gradMinus
 {
     checkOperands("gradMinus", nbrs, walls, V.size(), {A.size()}, -1, result.size());
     checkOperands("gradMinus", nbrs, walls, V.size(), {}, -1, R.size());
-    const scalar* v = V.cdata();
-    const scalar* a = A.cdata();
     const tensor2D* Ra = R.cdata();
-    const labelPair* ends = walls.segmentParticles().cdata();
 
     // R . eq. (8)
-    detail::sumOverNeighboursAndWalls<vector2D>
+    detail::gradMinusThen
     (
-        nbrs,
-        walls,
-        [&](const label i, const label j, const vector2D& rij, const scalar r)
-        {
-            return -v[j]*(a[i] - a[j])*K.gradW(rij, r);
-        },
-        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
-        {
-            return (a[i] - detail::segmentValue(ends, a, s))*gradGammaAs;
-        },
-        result,
+        K, nbrs, walls, V, A, result,
         [Ra](const label i, const vector2D& g) { return Ra[i] & g; }
     );
 }
@@ -294,25 +324,12 @@ void Foam::SPH::usaw::div
 {
     checkOperands("div", nbrs, walls, V.size(), {u.size()}, -1, result.size());
     checkOperands("div", nbrs, walls, V.size(), {}, -1, R.size());
-    const scalar* v = V.cdata();
-    const vector2D* U = u.cdata();
     const tensor2D* Ra = R.cdata();
-    const labelPair* ends = walls.segmentParticles().cdata();
 
-    // tr(R . G-{u}), G-{u} of eq. (8) as for the vector gradMinus
-    detail::sumOverNeighboursAndWalls<tensor2D>
+    // tr(R . G-{u})
+    detail::vectorGradMinusThen
     (
-        nbrs,
-        walls,
-        [&](const label i, const label j, const vector2D& rij, const scalar r)
-        {
-            return -v[j]*(K.gradW(rij, r)*(U[i] - U[j]));
-        },
-        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
-        {
-            return gradGammaAs*(U[i] - detail::segmentValue(ends, U, s));
-        },
-        result,
+        K, nbrs, walls, V, u, result,
         [Ra](const label i, const tensor2D& G) { return tr(Ra[i] & G); }
     );
 }
