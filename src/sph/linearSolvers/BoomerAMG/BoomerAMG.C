@@ -254,6 +254,9 @@ void Foam::SPH::BoomerAMG::hierarchy::build
 std::shared_ptr<Foam::SPH::BoomerAMG::hierarchy>
 Foam::SPH::BoomerAMG::newHierarchy()
 {
+    // MPI's start (a singleton Open MPI run spawns its daemon, about 0.3 s)
+    // here, with the solver's construction, not in the first time step
+    initialiseHypre();
     return std::make_shared<hierarchy>();
 }
 
