@@ -278,6 +278,12 @@ void Foam::SPH::BoomerAMG::expire(hierarchy& h)
 }
 
 
+bool Foam::SPH::BoomerAMG::wasReused(const hierarchy& h)
+{
+    return h.solvesSinceBuild > 0;
+}
+
+
 Foam::label Foam::SPH::BoomerAMG::nBuilds(const hierarchy& h)
 {
     return h.nBuilds;

@@ -123,7 +123,23 @@ Foam::solverPerformance Foam::SPH::linearSolver::solveWith
             s.preconditioner().setControls(amgControls_);
             s.preconditioner().attach(amgHierarchy_);
             configure(s);
-            const solverPerformance perf = run(s, relativeToStart, A, b, x);
+            solverPerformance perf = run(s, relativeToStart, A, b, x);
+            if (!perf.converged() && BoomerAMG::wasReused(*amgHierarchy_))
+            {
+                // A kept hierarchy can miss a matrix that changed a lot
+                // (free-surface rows appearing): once more, from where the
+                // solve stopped, with a new one
+                BoomerAMG::expire(*amgHierarchy_);
+                const solverPerformance again =
+                    run(s, relativeToStart, A, b, x);
+                perf = solverPerformance
+                (
+                    perf.solverName(), perf.fieldName(),
+                    perf.initialResidual(), again.finalResidual(),
+                    perf.nIterations() + again.nIterations(),
+                    again.converged()
+                );
+            }
             BoomerAMG::record(*amgHierarchy_, perf.nIterations());
             return perf;
         }
