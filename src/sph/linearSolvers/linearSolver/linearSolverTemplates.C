@@ -124,6 +124,7 @@ Foam::solverPerformance Foam::SPH::linearSolver::solveWith
             s.preconditioner().attach(amgHierarchy_);
             configure(s);
             solverPerformance perf = run(s, relativeToStart, A, b, x);
+            label withThisHierarchy = perf.nIterations();
             if (!perf.converged() && BoomerAMG::wasReused(*amgHierarchy_))
             {
                 // A kept hierarchy can miss a matrix that changed a lot
@@ -139,8 +140,9 @@ Foam::solverPerformance Foam::SPH::linearSolver::solveWith
                     perf.nIterations() + again.nIterations(),
                     again.converged()
                 );
+                withThisHierarchy = again.nIterations();
             }
-            BoomerAMG::record(*amgHierarchy_, perf.nIterations());
+            BoomerAMG::record(*amgHierarchy_, withThisHierarchy);
             return perf;
         }
     }
