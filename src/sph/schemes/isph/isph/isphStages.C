@@ -178,11 +178,7 @@ void Foam::SPH::isph::projectVelocity(const scalar dt)
         }
         else
         {
-            usaw::gradMinus(K, nbrs_, *usaw_, V_, p, gradP_);
-            for (label i = 0; i < nFluid_; ++i)
-            {
-                gradP_[i] = R_[i] & gradP_[i];
-            }
+            usaw::gradMinus(K, nbrs_, *usaw_, V_, R_, p, gradP_);
         }
     });
 
