@@ -11,6 +11,7 @@
 
 #include <cstdlib>
 #include <numeric>
+#include <type_traits>
 #include <vector>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -107,10 +108,8 @@ void initialiseHypre()
 
 // * * * * * * * * * * * * * * * * hierarchy * * * * * * * * * * * * * * * //
 
-class Foam::SPH::BoomerAMG::hierarchy
+struct Foam::SPH::BoomerAMG::hierarchy::hypreObjects
 {
-public:
-
     HYPRE_IJMatrix A = nullptr;
     HYPRE_IJVector b = nullptr;
     HYPRE_IJVector x = nullptr;
@@ -119,100 +118,39 @@ public:
     HYPRE_ParVector parB = nullptr;
     HYPRE_ParVector parX = nullptr;
 
-    //- Row indices 0 ... n-1, for the vector copies
+    //- Row indices 0 ... n-1, for the matrix and the vector copies
     std::vector<HYPRE_BigInt> rows;
-    std::vector<HYPRE_Complex> zero;
 
-    Eigen::Index n = 0;
     bool setupFailed = false;
 
-    // The rule of reuse
-    label nBuilds = 0;
-    label solvesSinceBuild = 0;
-    label iterationsAfterBuild = -1;
-    label lastIterations = 0;
-    bool expired = true;
+    hypreObjects(const controls& c, const Eigen::Index n);
 
-    hierarchy() = default;
-    hierarchy(const hierarchy&) = delete;
-    void operator=(const hierarchy&) = delete;
+    hypreObjects(const hypreObjects&) = delete;
+    void operator=(const hypreObjects&) = delete;
 
-    ~hierarchy()
+    ~hypreObjects()
     {
-        release();
+        HYPRE_BoomerAMGDestroy(amg);
+        HYPRE_IJVectorDestroy(x);
+        HYPRE_IJVectorDestroy(b);
+        HYPRE_IJMatrixDestroy(A);
     }
-
-    void release()
-    {
-        if (amg) HYPRE_BoomerAMGDestroy(amg);
-        if (x) HYPRE_IJVectorDestroy(x);
-        if (b) HYPRE_IJVectorDestroy(b);
-        if (A) HYPRE_IJMatrixDestroy(A);
-        amg = nullptr;
-        x = b = nullptr;
-        A = nullptr;
-    }
-
-    bool mustRebuild(const Eigen::Index size, const label reuse) const
-    {
-        return
-            expired || !amg || size != n || solvesSinceBuild >= reuse
-         || (
-                iterationsAfterBuild >= 0
-             && lastIterations > 2*iterationsAfterBuild + 2
-            );
-    }
-
-    void build
-    (
-        const controls& c,
-        const Eigen::Index size,
-        const int* rowStart,
-        const int* columns,
-        const scalar* values
-    );
 };
 
 
-void Foam::SPH::BoomerAMG::hierarchy::build
+Foam::SPH::BoomerAMG::hierarchy::hypreObjects::hypreObjects
 (
     const controls& c,
-    const Eigen::Index size,
-    const int* rowStart,
-    const int* columns,
-    const scalar* values
+    const Eigen::Index n
 )
+:
+    rows(n)
 {
-    release();
-    n = size;
+    std::iota(rows.begin(), rows.end(), HYPRE_BigInt(0));
     const HYPRE_BigInt last = HYPRE_BigInt(n) - 1;
 
-    // The matrix, row by row from Eigen's compressed rows
     HYPRE_IJMatrixCreate(MPI_COMM_SELF, 0, last, 0, last, &A);
     HYPRE_IJMatrixSetObjectType(A, HYPRE_PARCSR);
-    std::vector<HYPRE_Int> rowSizes(n);
-    for (Eigen::Index i = 0; i < n; ++i)
-    {
-        rowSizes[i] = rowStart[i + 1] - rowStart[i];
-    }
-    HYPRE_IJMatrixSetRowSizes(A, rowSizes.data());
-    HYPRE_IJMatrixInitialize(A);
-
-    rows.resize(n);
-    std::iota(rows.begin(), rows.end(), HYPRE_BigInt(0));
-    zero.assign(n, 0.0);
-    const std::vector<HYPRE_BigInt> bigColumns
-    (
-        columns + rowStart[0], columns + rowStart[n]
-    );
-    HYPRE_IJMatrixSetValues
-    (
-        A, HYPRE_Int(n), rowSizes.data(), rows.data(), bigColumns.data(),
-        values + rowStart[0]
-    );
-    HYPRE_IJMatrixAssemble(A);
-    HYPRE_IJMatrixGetObject(A, reinterpret_cast<void**>(&parA));
-
     for (HYPRE_IJVector* v : {&b, &x})
     {
         HYPRE_IJVectorCreate(MPI_COMM_SELF, 0, last, v);
@@ -236,57 +174,130 @@ void Foam::SPH::BoomerAMG::hierarchy::build
     HYPRE_BoomerAMGSetRelaxType(amg, hypreSmoother(c.smoother));
     HYPRE_BoomerAMGSetNumSweeps(amg, c.nSweeps);
     HYPRE_BoomerAMGSetAggNumLevels(amg, c.aggressiveLevels);
-
-    setupFailed = HYPRE_BoomerAMGSetup(amg, parA, parB, parX) != 0;
-    if (setupFailed)
-    {
-        HYPRE_ClearAllErrors();
-    }
-
-    ++nBuilds;
-    solvesSinceBuild = 0;
-    iterationsAfterBuild = -1;
-    lastIterations = 0;
-    expired = false;
 }
 
 
-std::shared_ptr<Foam::SPH::BoomerAMG::hierarchy>
-Foam::SPH::BoomerAMG::newHierarchy()
+Foam::SPH::BoomerAMG::hierarchy::hierarchy()
 {
     // MPI's start (a singleton Open MPI run spawns its daemon, about 0.3 s)
     // here, with the solver's construction, not in the first time step
     initialiseHypre();
-    return std::make_shared<hierarchy>();
 }
 
 
-void Foam::SPH::BoomerAMG::record(hierarchy& h, const label nIterations)
+Foam::SPH::BoomerAMG::hierarchy::~hierarchy() = default;
+
+
+bool Foam::SPH::BoomerAMG::hierarchy::mustRebuild
+(
+    const Eigen::Index n,
+    const controls& c
+) const
 {
-    ++h.solvesSinceBuild;
-    h.lastIterations = nIterations;
-    if (h.iterationsAfterBuild < 0)
+    return
+        expired_ || !hypre_ || n != size() || solvesSinceBuild_ >= c.reuse
+     || (
+            iterationsAfterBuild_ >= 0
+         && lastIterations_ > 2*iterationsAfterBuild_ + 2
+        );
+}
+
+
+void Foam::SPH::BoomerAMG::hierarchy::build
+(
+    const controls& c,
+    const Eigen::Index n,
+    const int* rowStart,
+    const int* columns,
+    const scalar* values
+)
+{
+    hypre_.reset();
+    hypre_.reset(new hypreObjects(c, n));
+    hypreObjects& h = *hypre_;
+
+    // The matrix, row by row from Eigen's compressed rows
+    std::vector<HYPRE_Int> rowSizes(n);
+    for (Eigen::Index i = 0; i < n; ++i)
     {
-        h.iterationsAfterBuild = nIterations;
+        rowSizes[i] = rowStart[i + 1] - rowStart[i];
     }
+    HYPRE_IJMatrixSetRowSizes(h.A, rowSizes.data());
+    HYPRE_IJMatrixInitialize(h.A);
+    // Debian's hypre has 32-bit global indices, Eigen's: no copy then
+    if constexpr (std::is_same<HYPRE_BigInt, int>::value)
+    {
+        HYPRE_IJMatrixSetValues
+        (
+            h.A, HYPRE_Int(n), rowSizes.data(), h.rows.data(),
+            columns + rowStart[0], values + rowStart[0]
+        );
+    }
+    else
+    {
+        const std::vector<HYPRE_BigInt> bigColumns
+        (
+            columns + rowStart[0], columns + rowStart[n]
+        );
+        HYPRE_IJMatrixSetValues
+        (
+            h.A, HYPRE_Int(n), rowSizes.data(), h.rows.data(),
+            bigColumns.data(), values + rowStart[0]
+        );
+    }
+    HYPRE_IJMatrixAssemble(h.A);
+    HYPRE_IJMatrixGetObject(h.A, reinterpret_cast<void**>(&h.parA));
+
+    h.setupFailed = HYPRE_BoomerAMGSetup(h.amg, h.parA, h.parB, h.parX) != 0;
+    if (h.setupFailed)
+    {
+        HYPRE_ClearAllErrors();
+    }
+
+    ++nBuilds_;
+    solvesSinceBuild_ = 0;
+    iterationsAfterBuild_ = -1;
+    lastIterations_ = 0;
+    expired_ = false;
 }
 
 
-void Foam::SPH::BoomerAMG::expire(hierarchy& h)
+void Foam::SPH::BoomerAMG::hierarchy::cycle(vectorN& x) const
 {
-    h.expired = true;
+    const hypreObjects& h = *hypre_;
+    const HYPRE_Int n = HYPRE_Int(h.rows.size());
+
+    HYPRE_IJVectorSetValues(h.b, n, h.rows.data(), x.data());
+    HYPRE_ParVectorSetConstantValues(h.parX, 0.0);
+
+    HYPRE_BoomerAMGSolve(h.amg, h.parA, h.parB, h.parX);
+    // One cycle "fails" to reach tolerance 0 by design
+    HYPRE_ClearAllErrors();
+
+    HYPRE_IJVectorGetValues(h.x, n, h.rows.data(), x.data());
 }
 
 
-bool Foam::SPH::BoomerAMG::wasReused(const hierarchy& h)
+Eigen::Index Foam::SPH::BoomerAMG::hierarchy::size() const
 {
-    return h.solvesSinceBuild > 0;
+    return hypre_ ? Eigen::Index(hypre_->rows.size()) : 0;
 }
 
 
-Foam::label Foam::SPH::BoomerAMG::nBuilds(const hierarchy& h)
+bool Foam::SPH::BoomerAMG::hierarchy::built() const
 {
-    return h.nBuilds;
+    return hypre_ && !hypre_->setupFailed;
+}
+
+
+void Foam::SPH::BoomerAMG::hierarchy::record(const label nIterations)
+{
+    ++solvesSinceBuild_;
+    lastIterations_ = nIterations;
+    if (iterationsAfterBuild_ < 0)
+    {
+        iterationsAfterBuild_ = nIterations;
+    }
 }
 
 
@@ -359,18 +370,6 @@ Foam::SPH::BoomerAMG::controls::controls(const dictionary& dict)
 }
 
 
-Foam::SPH::BoomerAMG::BoomerAMG()
-:
-    controls_(),
-    hierarchy_()
-{}
-
-
-// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
-
-Foam::SPH::BoomerAMG::~BoomerAMG() = default;
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::SPH::BoomerAMG::controls::write(Ostream& os) const
@@ -382,56 +381,6 @@ void Foam::SPH::BoomerAMG::controls::write(Ostream& os) const
         << ", maxInterpolationEntries " << maxInterpolationEntries
         << ", aggressiveLevels " << aggressiveLevels << ", reuse " << reuse
         << ")";
-}
-
-
-Eigen::Index Foam::SPH::BoomerAMG::rows() const
-{
-    return hierarchy_ ? hierarchy_->n : 0;
-}
-
-
-void Foam::SPH::BoomerAMG::setup
-(
-    const Eigen::Index n,
-    const int* rowStart,
-    const int* columns,
-    const scalar* values
-)
-{
-    initialiseHypre();
-    if (!hierarchy_)
-    {
-        hierarchy_ = newHierarchy();
-    }
-    if (hierarchy_->mustRebuild(n, controls_.reuse))
-    {
-        hierarchy_->build(controls_, n, rowStart, columns, values);
-    }
-}
-
-
-void Foam::SPH::BoomerAMG::solveInPlace(vectorN& x) const
-{
-    const hierarchy& d = *hierarchy_;
-    const HYPRE_Int n = HYPRE_Int(d.n);
-
-    HYPRE_IJVectorSetValues(d.b, n, d.rows.data(), x.data());
-    HYPRE_IJVectorSetValues(d.x, n, d.rows.data(), d.zero.data());
-
-    HYPRE_BoomerAMGSolve(d.amg, d.parA, d.parB, d.parX);
-    // One cycle "fails" to reach tolerance 0 by design
-    HYPRE_ClearAllErrors();
-
-    HYPRE_IJVectorGetValues(d.x, n, d.rows.data(), x.data());
-}
-
-
-Eigen::ComputationInfo Foam::SPH::BoomerAMG::info() const
-{
-    return (hierarchy_ && hierarchy_->amg && !hierarchy_->setupFailed)
-        ? Eigen::Success
-        : Eigen::NumericalIssue;
 }
 
 

@@ -82,7 +82,7 @@ Foam::SPH::linearSolver::linearSolver
     if (preconditioner_ == preconditionerType::BoomerAMG)
     {
         amgControls_ = BoomerAMG::controls(dict);
-        amgHierarchy_ = BoomerAMG::newHierarchy();
+        amgHierarchy_ = std::make_shared<BoomerAMG::hierarchy>();
     }
 }
 
@@ -112,14 +112,14 @@ void Foam::SPH::linearSolver::expirePreconditioner() const
 {
     if (amgHierarchy_)
     {
-        BoomerAMG::expire(*amgHierarchy_);
+        amgHierarchy_->expire();
     }
 }
 
 
 Foam::label Foam::SPH::linearSolver::nPreconditionerBuilds() const
 {
-    return amgHierarchy_ ? BoomerAMG::nBuilds(*amgHierarchy_) : 0;
+    return amgHierarchy_ ? amgHierarchy_->nBuilds() : 0;
 }
 
 

@@ -77,6 +77,38 @@ Foam::solverPerformance Foam::SPH::linearSolver::run
 }
 
 
+template<class EigenSolver>
+Foam::solverPerformance Foam::SPH::linearSolver::runKeepingHierarchy
+(
+    EigenSolver& solver,
+    const bool relativeToStart,
+    const sparseMatrix& A,
+    const vectorN& b,
+    vectorN& x
+) const
+{
+    solverPerformance perf = run(solver, relativeToStart, A, b, x);
+    label withThisBuild = perf.nIterations();
+    if (!perf.converged() && amgHierarchy_->wasReused())
+    {
+        // A kept hierarchy can miss a matrix that changed a lot (free-
+        // surface rows appearing): once more, from where the solve
+        // stopped, with a new one
+        amgHierarchy_->expire();
+        const solverPerformance again = run(solver, relativeToStart, A, b, x);
+        perf = solverPerformance
+        (
+            perf.solverName(), perf.fieldName(), perf.initialResidual(),
+            again.finalResidual(), perf.nIterations() + again.nIterations(),
+            again.converged()
+        );
+        withThisBuild = again.nIterations();
+    }
+    amgHierarchy_->record(withThisBuild);
+    return perf;
+}
+
+
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
 template<template<class, class> class Solver, class Configure>
@@ -123,27 +155,7 @@ Foam::solverPerformance Foam::SPH::linearSolver::solveWith
             s.preconditioner().setControls(amgControls_);
             s.preconditioner().attach(amgHierarchy_);
             configure(s);
-            solverPerformance perf = run(s, relativeToStart, A, b, x);
-            label withThisHierarchy = perf.nIterations();
-            if (!perf.converged() && BoomerAMG::wasReused(*amgHierarchy_))
-            {
-                // A kept hierarchy can miss a matrix that changed a lot
-                // (free-surface rows appearing): once more, from where the
-                // solve stopped, with a new one
-                BoomerAMG::expire(*amgHierarchy_);
-                const solverPerformance again =
-                    run(s, relativeToStart, A, b, x);
-                perf = solverPerformance
-                (
-                    perf.solverName(), perf.fieldName(),
-                    perf.initialResidual(), again.finalResidual(),
-                    perf.nIterations() + again.nIterations(),
-                    again.converged()
-                );
-                withThisHierarchy = again.nIterations();
-            }
-            BoomerAMG::record(*amgHierarchy_, withThisHierarchy);
-            return perf;
+            return runKeepingHierarchy(s, relativeToStart, A, b, x);
         }
     }
     return solverPerformance();
