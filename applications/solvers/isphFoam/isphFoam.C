@@ -38,7 +38,7 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    SPH::timeLoop<SPH::isph>(runTime);
+    SPH::runSolver<SPH::isph>(runTime);
 
     return 0;
 }

@@ -35,7 +35,7 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    SPH::timeLoop<SPH::wcsph>(runTime);
+    SPH::runSolver<SPH::wcsph>(runTime);
 
     return 0;
 }

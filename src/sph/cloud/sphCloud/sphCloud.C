@@ -47,6 +47,8 @@ Foam::SPH::sphCloud::sphCloud
     dr_(dr),
     rho0_(rho0),
     g_(g),
+    boxMin_(boxMin),
+    boxMax_(boxMax),
     cells_(boxMin, boxMax, W.support())
 {
     updateCells();

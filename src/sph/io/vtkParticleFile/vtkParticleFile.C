@@ -15,4 +15,26 @@ Foam::SPH::vtkParticleFile::vtkParticleFile(const UList<vector2D>& positions)
 }
 
 
+Foam::SPH::vtkParticleFile::vtkParticleFile(const particles& parts)
+:
+    vtkParticleFile(parts.positions())
+{
+    for (const word& name : parts.names())
+    {
+        if (parts.isScalar(name))
+        {
+            addPointField(name, parts.field<scalar>(name));
+        }
+        else if (parts.isVector(name))
+        {
+            addPointField(name, parts.field<vector2D>(name));
+        }
+        else
+        {
+            addPointField(name, parts.field<label>(name));
+        }
+    }
+}
+
+
 // ************************************************************************* //

@@ -141,6 +141,29 @@ void Foam::SPH::particles::append(const particles& other)
 }
 
 
+void Foam::SPH::particles::save(snapshot& s) const
+{
+    s.positions = *positions_;
+    for (const word& name : order_)
+    {
+        if (!restart_.found(name)) continue;
+        if (scalars_.found(name)) s.scalars(name) = *scalars_[name];
+        else if (vectors_.found(name)) s.vectors(name) = *vectors_[name];
+        else s.labels(name) = *labels_[name];
+    }
+}
+
+
+void Foam::SPH::particles::restore(const snapshot& s)
+{
+    resize(s.positions.size());
+    *positions_ = s.positions;
+    forAllConstIters(s.scalars, iter) { field<scalar>(iter.key()) = iter.val(); }
+    forAllConstIters(s.vectors, iter) { field<vector2D>(iter.key()) = iter.val(); }
+    forAllConstIters(s.labels, iter) { field<label>(iter.key()) = iter.val(); }
+}
+
+
 void Foam::SPH::particles::readFields
 (
     const wordList& scalarNames,

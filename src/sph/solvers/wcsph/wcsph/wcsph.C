@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wcsph.H"
+#include "memberStage.H"
+#include "OStringStream.H"
 #include "fluidProperties.H"
 #include "Time.H"
 #include "dimensionedScalar.H"
@@ -107,7 +109,6 @@ void Foam::SPH::wcsph::readSchemes()
     {
         viscosity_ = viscosityModel::none;
     }
-    minDeltaTFraction_ = schemes_.getOrDefault<scalar>("minDeltaTFraction", 1e-3);
     skinByH_ = schemes_.getOrDefault<scalar>("neighbourSkin", 0.2);
     if (skinByH_ < 0)
     {
@@ -314,7 +315,7 @@ void Foam::SPH::wcsph::initialise()
 
 Foam::SPH::wcsph::wcsph(Time& runTime)
 :
-    runTime_(runTime),
+    sphSolver(runTime),
     schemes_
     (
         IOobject
@@ -327,7 +328,6 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     c0_(0), gamma_(7), b0_(0), ks_(1.5), K_(0),
     densityDiffusion_(true), densityDiffusionHydrostatic_(true), alphaAV_(0),
     viscosity_(viscosityModel::Morris),
-    minDeltaTFraction_(1e-3),
     walls_(new wallMesh(runTime)),
     parts_(runTime, runTime.timeName()),
     nFluid_(0),
@@ -341,7 +341,6 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     nBounced_(0),
     ratesCurrent_(false),
     timeNeighbours_(0), timeInteractions_(0), timeIntegration_(0),
-    deltaT0_(-1),
     maxSpeed_(0), maxAccel_(0), maxSoundSpeed_(0)
 {
     readPhysics();
@@ -382,6 +381,7 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     {
         crossing_.reset(new wallCrossing(*walls_, kernel_->support()));
     }
+    addStages();
 }
 
 
@@ -400,63 +400,99 @@ std::string Foam::SPH::wcsph::neighbourPolicy() const
 }
 
 
-void Foam::SPH::wcsph::printStages() const
+void Foam::SPH::wcsph::addStages()
 {
-    Info<< "WCSPH (004_f29223b75201dc88.txt), stages of each Runge-Kutta stage:"
+    OStringStream rates;
+    rates
+        << "classical Runge-Kutta, eq. (14); at each of its four stages:" << nl
+        << "        neighbours         cell-linked list, " << neighbourPolicy().c_str() << nl
+        << "        wall particles     dummy pressure eq. (10), density from eq. (4)"
         << nl
-        << "    neighbours         cell-linked list, " << neighbourPolicy().c_str() << nl
-        << "    wall particles     dummy pressure eq. (10), density from eq. (4)"
-        << nl
-        << "    equation of state  Tait eq. (4): c0 " << c0_ << ", gamma "
+        << "        equation of state  Tait eq. (4): c0 " << c0_ << ", gamma "
         << gamma_ << ", b0 " << b0_ << nl
-        << "    continuity         eq. (6)"
-        << (densityDiffusion_ ? " with Rusanov density diffusion (7)" : "")
-        << nl;
+        << "        continuity         eq. (6)"
+        << (densityDiffusion_ ? " with Rusanov density diffusion (7)" : "");
     if (densityDiffusion_)
     {
-        Info<< "                       of "
+        rates
+            << nl << "                           of "
             << (
                    densityDiffusionHydrostatic_
                  ? "rho - rho_hydrostatic (densityDiffusionHydrostatic yes)"
                  : "rho, as printed (densityDiffusionHydrostatic no)"
-               )
-            << nl;
+               );
     }
-    Info<< "    momentum           Hu-Adams pressure gradient eq. (8), gravity "
+    rates
+        << nl << "        momentum           Hu-Adams pressure gradient eq. (8), gravity "
         << g_ << nl
-        << "    repulsion          eqs. (11)-(12): ks " << ks_ << ", K " << K_
-        << nl;
+        << "        repulsion          eqs. (11)-(12): ks " << ks_ << ", K " << K_
+        << nl << "        viscosity          ";
     if (viscosity_ == viscosityModel::Morris)
     {
-        Info<< "    viscosity          Morris, nu " << nu_ << nl;
+        rates << "Morris, nu " << nu_;
     }
     else
     {
-        Info<< "    viscosity          none (nu = " << nu_ << ")" << nl;
+        rates << "none (nu = " << nu_ << ")";
     }
     if (alphaAV_ > 0)
     {
-        Info<< "    artificial viscosity  Monaghan, alpha " << alphaAV_
-            << " (not in 004_...)" << nl;
+        rates
+            << nl << "        artificial viscosity  Monaghan, alpha " << alphaAV_
+            << " (not in 004_...)";
     }
-    Info<< "    wall crossing      "
-        << (crossing_ ? "particles that cross a wall in a step bounce back"
-            " (a safety net; counted in the log)" : "not checked (wallBounce no)")
-        << nl
-        << "    time integration   classical Runge-Kutta, eq. (14)" << nl
-        << "    time step          eq. (15), C_n = maxCo "
-        << runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2)
-        << (runTime_.controlDict().getOrDefault<bool>("adjustTimeStep", false)
-            ? "" : " (adjustTimeStep off: deltaT fixed)")
-        << nl << endl;
+
+    stages_.add
+    (
+        new memberStage<wcsph>
+        (
+            "rungeKutta4", {"positions", "U", "rho"}, {"positions", "U", "rho"},
+            rates.str(), *this, &wcsph::rungeKutta4, "Runge-Kutta 4"
+        )
+    );
+    if (crossing_)
+    {
+        stages_.add
+        (
+            new memberStage<wcsph>
+            (
+                "wallBounce", {"positions", "U"}, {"positions", "U"},
+                "particles that cross a wall in a step bounce back (a safety"
+                " net; counted in the log)", *this, &wcsph::wallBounce
+            )
+        );
+    }
+    stages_.add
+    (
+        new memberStage<wcsph>
+        (
+            "equationOfState", {"rho"}, {"p"},
+            "Tait eq. (4): p of the new density", *this, &wcsph::equationOfState
+        )
+    );
 }
 
 
-Foam::scalar Foam::SPH::wcsph::stableDeltaT()
+void Foam::SPH::wcsph::printSettings() const
 {
+    if (!crossing_)
+    {
+        Info<< "    wall crossing       not checked (wallBounce no)" << nl;
+    }
+    Info<< "    time step           eq. (15), C_n = maxCo "
+        << runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2)
+        << (runTime_.controlDict().getOrDefault<bool>("adjustTimeStep", false)
+            ? "" : " (adjustTimeStep off: deltaT fixed)")
+        << nl;
+}
+
+
+Foam::scalar Foam::SPH::wcsph::maxDeltaT() const
+{
+    // The rates of the state are those of the coming step's first stage
     if (!ratesCurrent_)
     {
-        computeRates();
+        const_cast<wcsph&>(*this).computeRates();
     }
     const scalar h = kernel_->h();
     const scalar Cn = runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2);
@@ -471,37 +507,15 @@ Foam::scalar Foam::SPH::wcsph::stableDeltaT()
     {
         dt = min(dt, 0.25*std::sqrt(h/maxAccel_));
     }
-    dt = min(dt, runTime_.controlDict().getOrDefault<scalar>("maxDeltaT", GREAT));
-
-    if (deltaT0_ < 0)
-    {
-        deltaT0_ = dt;
-    }
-    return dt;
+    return min(dt, GREAT);
 }
 
 
-void Foam::SPH::wcsph::evolve()
+void Foam::SPH::wcsph::rungeKutta4(const scalar dt)
 {
-    const scalar dt = runTime_.deltaTValue();
     if (!ratesCurrent_)
     {
         computeRates();
-    }
-    if (deltaT0_ < 0)
-    {
-        deltaT0_ = dt;
-    }
-    if (dt < minDeltaTFraction_*deltaT0_)
-    {
-        fail
-        (
-            "The time step collapsed to " + Foam::name(dt) + " s, below "
-          + Foam::name(minDeltaTFraction_) + " of the first one ("
-          + Foam::name(deltaT0_) + " s): the flow is too violent for this"
-          " resolution and sound speed",
-            -1, runTime_.value(), false
-        );
     }
 
     vector2D* x = parts_.positions().data();
@@ -558,19 +572,32 @@ void Foam::SPH::wcsph::evolve()
         ).count();
     }
     ratesCurrent_ = false;
+}
 
-    if (crossing_)
-    {
-        nBounced_ += crossing_->bounce(x0_, parts_.positions(), parts_.field<vector2D>("U"), nF);
-    }
 
-    // Pressure of the new state, and the neighbour search function
-    // objects use
+void Foam::SPH::wcsph::wallBounce(const scalar dt)
+{
+    nBounced_ += crossing_->bounce
+    (
+        x0_, parts_.positions(), parts_.field<vector2D>("U"), nFluid_
+    );
+}
+
+
+void Foam::SPH::wcsph::equationOfState(const scalar dt)
+{
+    const scalar* rho = parts_.field<scalar>("rho").cdata();
     scalar* p = parts_.field<scalar>("p").data();
-    for (label i = 0; i < nF; ++i)
+    for (label i = 0; i < nFluid_; ++i)
     {
         p[i] = pressure(rho[i]);
     }
+}
+
+
+void Foam::SPH::wcsph::afterStep(const scalar dt)
+{
+    // The neighbour search function objects use
     cloud_->updateCells();
 
     // A restart from this time builds a new list at its first step: so does
@@ -579,96 +606,10 @@ void Foam::SPH::wcsph::evolve()
     {
         listBuilt_ = false;
     }
-
-    word what;
-    const label bad = findBadParticle(what);
-    if (bad >= 0)
-    {
-        fail(what, bad, runTime_.value(), true);
-    }
 }
 
 
-Foam::label Foam::SPH::wcsph::findBadParticle(word& what) const
-{
-    const vector2D* x = parts_.positions().cdata();
-    const vector2D* U = parts_.field<vector2D>("U").cdata();
-    const scalar* rho = parts_.field<scalar>("rho").cdata();
-
-    label bad = -1;
-    for (label i = 0; i < nFluid_ && bad < 0; ++i)
-    {
-        const bool finite =
-            std::isfinite(x[i].x()) && std::isfinite(x[i].y())
-         && std::isfinite(U[i].x()) && std::isfinite(U[i].y())
-         && std::isfinite(rho[i]);
-        if (!finite)
-        {
-            what = "NaN or Inf in the position, velocity or density of";
-            bad = i;
-        }
-        else if
-        (
-            x[i].x() < boxMin_.x() || x[i].y() < boxMin_.y()
-         || x[i].x() > boxMax_.x() || x[i].y() > boxMax_.y()
-        )
-        {
-            what = "Left the domain (the walls' box with a margin):";
-            bad = i;
-        }
-    }
-    return bad;
-}
-
-
-void Foam::SPH::wcsph::fail
-(
-    const string& what,
-    label i,
-    scalar tFailed,
-    bool stepTaken
-)
-{
-    // The state at the start of this step was good: put it back (if the
-    // step changed it) and write it at the time it belongs to
-    const label nF = nFluid_;
-    vector2DField& x = parts_.positions();
-    vector2DField& U = parts_.field<vector2D>("U");
-    scalarField& rho = parts_.field<scalar>("rho");
-    scalarField& p = parts_.field<scalar>("p");
-
-    string where;
-    if (i >= 0)
-    {
-        where = " particle id " + Foam::name(parts_.field<label>("id")[i])
-          + " at (" + Foam::name(x[i].x()) + " " + Foam::name(x[i].y()) + ")"
-          + (i < nF ? "" : " (a wall particle)");
-    }
-    if (stepTaken)
-    {
-        for (label j = 0; j < nF; ++j)
-        {
-            x[j] = x0_[j];
-            U[j] = U0_[j];
-            rho[j] = rhoStart_[j];
-            p[j] = pressure(rho[j]);
-        }
-    }
-    runTime_.setTime(runTime_.value() - runTime_.deltaTValue(), runTime_.timeIndex() - 1);
-    runTime_.writeNow();
-    writeVTK();
-
-    FatalErrorInFunction
-        << what.c_str() << where.c_str() << nl
-        << "    at time " << tFailed << " s (time step " << runTime_.timeIndex() + 1
-        << ", deltaT " << runTime_.deltaTValue() << " s)" << nl
-        << "The last good state, time " << runTime_.timeName()
-        << ", is written in " << runTime_.timePath() << nl
-        << exit(FatalError);
-}
-
-
-void Foam::SPH::wcsph::writeVTK() const
+void Foam::SPH::wcsph::write() const
 {
     const vector2DField& x = parts_.positions();
     if (!vtk_)
@@ -684,12 +625,7 @@ void Foam::SPH::wcsph::writeVTK() const
     }
     vtkCaseWriter& vtk = *vtk_;
 
-    vtkParticleFile particleFile(x);
-    particleFile.addPointField("U", parts_.field<vector2D>("U"));
-    particleFile.addPointField("p", parts_.field<scalar>("p"));
-    particleFile.addPointField("rho", parts_.field<scalar>("rho"));
-    particleFile.addPointField("type", parts_.field<label>("type"));
-    particleFile.addPointField("id", parts_.field<label>("id"));
+    vtkParticleFile particleFile(parts_);
     vtk.writeParticles(particleFile, runTime_.timeIndex(), runTime_.value());
 
     if (vtk.wallsDue())
@@ -704,10 +640,11 @@ void Foam::SPH::wcsph::writeVTK() const
 
 void Foam::SPH::wcsph::printTimes() const
 {
+    stages_.printTimes(Info);
     const scalar total = timeNeighbours_ + timeInteractions_ + timeIntegration_;
     if (total > 0)
     {
-        Info<< "Time in the steps: neighbour search " << timeNeighbours_ << " s ("
+        Info<< "Within the Runge-Kutta stages: neighbour search " << timeNeighbours_ << " s ("
             << label(100*timeNeighbours_/total + 0.5) << "%), interactions "
             << timeInteractions_ << " s (" << label(100*timeInteractions_/total + 0.5)
             << "%), integration " << timeIntegration_ << " s ("
@@ -720,7 +657,7 @@ void Foam::SPH::wcsph::printTimes() const
 }
 
 
-void Foam::SPH::wcsph::printStep()
+void Foam::SPH::wcsph::printStep() const
 {
     if (nBounced_)
     {

@@ -1,0 +1,39 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "shifting.H"
+#include "usawOperators.H"
+#include "kernelDispatch.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::shifting::execute(const scalar dt)
+{
+    isphWork& w = work_;
+    vector2DField& U = w.parts.field<vector2D>("U");
+    dispatch(w.W, [&](const auto& K)
+    {
+        usaw::concentrationGradient(K, w.nbrs, w.usaw, w.V, gradC_);
+        usaw::gradMinus(K, w.nbrs, w.usaw, w.V, U, gradU_);
+    });
+
+    const scalar coeff = coeff_*sqr(w.W.h());
+    const label* nearSurface = w.nearSurface.cdata();
+    vector2D* x = w.parts.positions().data();
+    scalar maxShift2 = 0;
+    for (label i = 0; i < w.nFluid; ++i)
+    {
+        if (nearSurface[i]) continue;
+        const vector2D delta(-coeff*gradC_[i]);
+        U[i] += delta & gradU_[i];
+        x[i] += delta;
+        maxShift2 = max(maxShift2, magSqr(delta));
+    }
+    maxShift_ = std::sqrt(maxShift2);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,327 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "timeLoop.H"
+#include "wallCrossing.H"
+#include "IOdictionary.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "sigFpe.H"
+#include "sphFoamVersion.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
+:
+    runTime_(runTime),
+    solver_(solver),
+    minDeltaTFraction_(1e-3),
+    deltaT0_(-1),
+    lastDeltaT_(-1),
+    lastDeltaTStart_(-1)
+{
+    const IOdictionary schemes
+    (
+        IOobject
+        (
+            "sphSchemes", runTime.system(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    minDeltaTFraction_ =
+        schemes.getOrDefault<scalar>("minDeltaTFraction", minDeltaTFraction_);
+    if (!(minDeltaTFraction_ >= 0 && minDeltaTFraction_ < 1))
+    {
+        FatalIOErrorInFunction(schemes)
+            << "Entry minDeltaTFraction " << minDeltaTFraction_
+            << ": expected 0 <= minDeltaTFraction < 1" << exit(FatalIOError);
+    }
+    readState();
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::timeLoop::readState()
+{
+    const IOdictionary state
+    (
+        IOobject
+        (
+            solver_.stateName(), runTime_.timeName(), "uniform", runTime_,
+            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+        )
+    );
+    lastDeltaT_ = state.getOrDefault<scalar>("deltaT", -1);
+    solver_.readState(state);
+}
+
+
+void Foam::SPH::timeLoop::writeState() const
+{
+    // Seventeen digits give the doubles back exactly
+    const fileName dir(runTime_.timePath()/"uniform");
+    mkDir(dir);
+    OFstream os(dir/solver_.stateName());
+    os.precision(17);
+    IOobject
+    (
+        solver_.stateName(), runTime_.timeName(), "uniform", runTime_
+    ).writeHeader(os, "dictionary");
+    solver_.writeState(os);
+    os.writeEntry("deltaT", lastDeltaT_);
+    IOobject::writeEndDivider(os);
+}
+
+
+Foam::scalar Foam::SPH::timeLoop::nextDeltaT() const
+{
+    scalar dt = solver_.maxDeltaT();
+    const scalar growth = solver_.maxDeltaTGrowth();
+    if (lastDeltaT_ > 0 && growth < VGREAT)
+    {
+        dt = min(dt, growth*lastDeltaT_);
+    }
+    dt = min(dt, runTime_.controlDict().getOrDefault<scalar>("maxDeltaT", VGREAT));
+    return dt < VGREAT ? dt : runTime_.deltaTValue();
+}
+
+
+Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
+{
+    const sphCloud& cloud = solver_.cloud();
+    const particles& parts = cloud.parts();
+    const label nFluid = cloud.nFluid();
+
+    auto finite = [](const vector2D& v)
+    {
+        return std::isfinite(v.x()) && std::isfinite(v.y());
+    };
+
+    const vector2D* x = parts.positions().cdata();
+    for (label i = 0; i < nFluid; ++i)
+    {
+        if (!finite(x[i]))
+        {
+            what = "NaN or Inf in the position of";
+            return i;
+        }
+    }
+    for (const word& name : parts.names())
+    {
+        if (!parts.isRestart(name)) continue;
+        label bad = -1;
+        if (parts.isScalar(name))
+        {
+            const scalar* f = parts.field<scalar>(name).cdata();
+            for (label i = 0; i < nFluid && bad < 0; ++i)
+            {
+                if (!std::isfinite(f[i])) bad = i;
+            }
+        }
+        else if (parts.isVector(name))
+        {
+            const vector2D* f = parts.field<vector2D>(name).cdata();
+            for (label i = 0; i < nFluid && bad < 0; ++i)
+            {
+                if (!finite(f[i])) bad = i;
+            }
+        }
+        if (bad >= 0)
+        {
+            what = "NaN or Inf in the field " + name + " of";
+            return bad;
+        }
+    }
+    for (label i = 0; i < nFluid; ++i)
+    {
+        if (!cloud.contains(x[i]))
+        {
+            what = "Left the domain (the walls' box with a margin):";
+            return i;
+        }
+    }
+
+    // Fluid particles whose step crossed a (still) wall segment
+    const wallCrossing* crossing = solver_.crossing();
+    if (crossing)
+    {
+        List<vector2D> xEnd(SubList<vector2D>(parts.positions(), nFluid));
+        List<vector2D> UEnd(SubList<vector2D>(parts.field<vector2D>("U"), nFluid));
+        if (crossing->bounce(start_.positions, xEnd, UEnd, nFluid))
+        {
+            for (label i = 0; i < nFluid; ++i)
+            {
+                if (xEnd[i] != x[i])
+                {
+                    what = "Crossed a wall:";
+                    return i;
+                }
+            }
+        }
+    }
+    return -1;
+}
+
+
+void Foam::SPH::timeLoop::fail
+(
+    const string& what,
+    const label i,
+    const bool restore
+)
+{
+    const scalar tFailed = runTime_.value();
+    const particles& parts = solver_.cloud().parts();
+    string where;
+    if (i >= 0)
+    {
+        const vector2D& x = parts.positions()[i];
+        where = " particle id " + Foam::name(parts.field<label>("id")[i])
+          + " at (" + Foam::name(x.x()) + " " + Foam::name(x.y()) + ")"
+          + (i < solver_.cloud().nFluid() ? "" : " (a wall particle)");
+    }
+
+    // The state at the start of the step was good: put it back and write
+    // it at the time it belongs to
+    if (restore)
+    {
+        solver_.cloud().parts().restore(start_);
+        solver_.restoreState();
+        lastDeltaT_ = lastDeltaTStart_;
+    }
+    runTime_.setTime(runTime_.value() - runTime_.deltaTValue(), runTime_.timeIndex() - 1);
+    runTime_.writeNow();
+    solver_.write();
+    writeState();
+
+    FatalErrorInFunction
+        << what.c_str() << where.c_str() << nl
+        << "    at time " << tFailed << " s (time step "
+        << runTime_.timeIndex() + 1 << ", deltaT " << runTime_.deltaTValue()
+        << " s)" << nl
+        << "The last good state, time " << runTime_.timeName()
+        << ", is written in " << runTime_.timePath() << nl
+        << exit(FatalError);
+}
+
+
+void Foam::SPH::timeLoop::step()
+{
+    const scalar dt = runTime_.deltaTValue();
+    if (deltaT0_ < 0)
+    {
+        deltaT0_ = dt;
+    }
+    if (dt < minDeltaTFraction_*deltaT0_)
+    {
+        fail
+        (
+            "The time step collapsed to " + Foam::name(dt) + " s, below "
+          + Foam::name(minDeltaTFraction_) + " of the first one ("
+          + Foam::name(deltaT0_) + " s): the flow is too violent for this"
+            " resolution and time-step control",
+            -1, false
+        );
+    }
+
+    solver_.cloud().parts().save(start_);
+    solver_.saveState(start_);
+    lastDeltaTStart_ = lastDeltaT_;
+
+    try
+    {
+        solver_.solve(dt);
+    }
+    catch (const stageFailure& failure)
+    {
+        fail(failure.what(), failure.particle(), true);
+    }
+    lastDeltaT_ = dt;
+
+    string what;
+    const label bad = findBadParticle(what);
+    if (bad >= 0)
+    {
+        fail(what, bad, true);
+    }
+    solver_.afterStep(dt);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::timeLoop::switchOffFpe()
+{
+    sigFpe::unset(false);
+    Info<< "sphFoam " << version << nl
+        << "Floating-point exceptions are not trapped: NaN and Inf are checked"
+        << " after every time step" << nl << endl;
+}
+
+
+void Foam::SPH::timeLoop::run()
+{
+    Info<< solver_.title().c_str() << ", stages of each time step:" << nl;
+    solver_.stages().print(Info);
+    solver_.printSettings();
+    Info<< "    checks              NaN/Inf in any field, particles leaving"
+        << " the domain" << (solver_.crossing() ? " or crossing a wall" : "")
+        << ", deltaT below " << minDeltaTFraction_ << " of the first; the"
+        << " last good state is written" << nl << endl;
+
+    const bool adjustTimeStep =
+        runTime_.controlDict().getOrDefault<bool>("adjustTimeStep", false);
+    const label logInterval =
+        max(label(1), runTime_.controlDict().getOrDefault<label>("logInterval", 1));
+
+    if (runTime_.timeIndex() == 0 || !isDir(runTime_.path()/"VTK"))
+    {
+        solver_.write();
+    }
+
+    Info<< "Starting time loop" << nl << endl;
+
+    while (runTime_.run())
+    {
+        if (adjustTimeStep)
+        {
+            runTime_.setDeltaT(nextDeltaT());
+        }
+        ++runTime_;
+
+        const bool log =
+            runTime_.timeIndex() % logInterval == 0 || runTime_.writeTime();
+        if (log)
+        {
+            Info<< "deltaT = " << runTime_.deltaTValue() << nl
+                << "Time = " << runTime_.timeName() << nl << nl;
+        }
+
+        step();
+
+        runTime_.write();
+        if (runTime_.writeTime())
+        {
+            solver_.write();
+            writeState();
+        }
+
+        if (log)
+        {
+            solver_.printStep();
+            Info<< "ExecutionTime = " << runTime_.elapsedCpuTime() << " s"
+                << "  ClockTime = " << runTime_.elapsedClockTime() << " s"
+                << nl << endl;
+        }
+    }
+
+    solver_.printTimes();
+    Info<< "End" << nl << endl;
+}
+
+
+// ************************************************************************* //
