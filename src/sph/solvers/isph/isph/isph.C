@@ -19,6 +19,7 @@
 #include "projection.H"
 #include "shifting.H"
 #include "wallDistance.H"
+#include "bodyForces.H"
 
 #include <cmath>
 
@@ -303,6 +304,7 @@ void Foam::SPH::isph::addStages()
     if (moving) stages_.add(new moveWalls(w, runTime_, false));
     stages_.add(new usawNeighbours(w, ""));
     stages_.add(new viscousPrediction(w));
+    if (!forces_.empty()) stages_.add(new bodyForces(w, forces_));
     if (renormalised) stages_.add(new renormalisation(w));
     if (freeSurface_) stages_.add(new freeSurface(w, divRMax));
     pressure_ = &stages_.add
@@ -360,6 +362,7 @@ Foam::SPH::isph::isph(Time& runTime)
     parts_(runTime, runTime.timeName()),
     nFluid_(0),
     nbrs_(true),
+    forces_(runTime),
     freeSurface_(false),
     pressure_(nullptr),
     wallDistance_(nullptr),
@@ -443,6 +446,14 @@ void Foam::SPH::isph::saveState(const particles::snapshot& start)
     work_->xStart = &start.positions;
     UStart_ = &start.vectors["U"];
     maxAccelStart_ = maxAccel_;
+    forces_.save();
+}
+
+
+void Foam::SPH::isph::restoreState()
+{
+    maxAccel_ = maxAccelStart_;
+    forces_.restore();
 }
 
 
@@ -475,6 +486,7 @@ void Foam::SPH::isph::readState(const dictionary& dict)
 void Foam::SPH::isph::writeState(Ostream& os) const
 {
     os.writeEntry("maxAcceleration", maxAccel_);
+    forces_.write();
 }
 
 
