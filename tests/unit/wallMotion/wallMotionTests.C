@@ -157,6 +157,43 @@ TEST_F(wallMotion, rotatingMotionIsTheAnalyticRotation)
 }
 
 
+TEST_F(wallMotion, rampedOmegaStartsAtRest)
+{
+    // omega from 0 to 2 rad/s over 1 s: at rest at t = 0, then
+    // theta = t^2 (OpenFOAM's table integrates the ramp exactly)
+    const SPH::wallMesh walls(makeWalls(drum));
+    const SPH::wallMotion motion
+    (
+        sphTest::dict
+        (
+            dynamicMeshDict
+            (
+                "drum { solidBodyMotionFunction rotatingMotion; rotatingMotionCoeffs"
+                " { origin (0.3 0.2 0); axis (0 0 1); omega table ((0 0) (1 2) (100 2)); } }"
+            )
+        ),
+        *runTime, walls
+    );
+    const vector2D c(0.3, 0.2);
+    List<vector2D> x, U;
+    labelList pts;
+    for (const scalar t : {0.0, 0.5, 0.5, 2.0, 0.0})
+    {
+        move(motion, walls, "drum", t, x, U, pts);
+        const scalar theta = t < 1 ? t*t : 2*(t - 0.5);
+        const scalar omega = 2*min(t, 1.0);
+        for (const label v : pts)
+        {
+            const vector2D d0(walls.points()[v] - c);
+            const vector2D d(x[v] - c);
+            EXPECT_NEAR(d.x(), std::cos(theta)*d0.x() - std::sin(theta)*d0.y(), 1e-12);
+            EXPECT_NEAR(d.y(), std::sin(theta)*d0.x() + std::cos(theta)*d0.y(), 1e-12);
+            EXPECT_NEAR(mag(U[v] - omega*vector2D(-d.y(), d.x())), 0, 1e-12);
+        }
+    }
+}
+
+
 TEST_F(wallMotion, linearMotionTranslates)
 {
     const SPH::wallMesh walls(makeWalls(drum));

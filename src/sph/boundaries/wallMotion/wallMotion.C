@@ -14,6 +14,26 @@ const Foam::scalar Foam::SPH::wallMotion::differenceStep = 1e-6;
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+bool Foam::SPH::wallMotion::identityAtZero(const dictionary& d)
+{
+    const word name(d.get<word>("solidBodyMotionFunction"));
+    if (name == "multiMotion")
+    {
+        for (const entry& e : d.optionalSubDict("multiMotionCoeffs"))
+        {
+            if (e.isDict() && !identityAtZero(e.dict()))
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+    return
+        name == "rotatingMotion" || name == "linearMotion"
+     || name == "oscillatingLinearMotion" || name == "oscillatingRotatingMotion";
+}
+
+
 void Foam::SPH::wallMotion::readEntry(const entry& e)
 {
     const dictionary& d = e.dict();
@@ -145,6 +165,15 @@ Foam::septernion Foam::SPH::wallMotion::transformation
     const scalar t
 ) const
 {
+    // At t = 0 these motions are at rest by their formulas; and OpenFOAM
+    // v1912's table, integrating omega over [0, 0] for rotatingMotion,
+    // writes outside its index list (TableBase::integrate with t2 at the
+    // first sample): so they are not called there
+    if (t == 0 && identityAtZero(dicts_[m]))
+    {
+        return septernion::I;
+    }
+
     // The functions read time_.value(); nothing else of the private Time
     time_->value() = t;
     return functions_[m].transformation();
