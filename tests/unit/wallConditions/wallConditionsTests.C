@@ -4,13 +4,15 @@
 Description
     SPH::wallConditions: the boundaryField of 0/U and 0/p read with
     OpenFOAM's type names, Function1 and dictionary rules (patterns,
-    #include, $macros), and the errors of bad entries.
+    #include, $macros), and the errors of bad entries; SPH::wallBoundaries'
+    error for a case that still has constant/movingWalls.
 
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
 #include "testCase.H"
 #include "wallConditions.H"
+#include "wallBoundaries.H"
 #include "wallShape.H"
 
 using namespace Foam;
@@ -305,6 +307,20 @@ TEST_F(wallConditions, readsTheCaseFileWithIncludesAndMacros)
     rmDir(dir/"0");
     const std::string msg = errorOf([&]() { SPH::wallConditions p(*runTime, walls, "p"); });
     EXPECT_TRUE(has(msg, "0/p")) << msg;
+}
+
+
+TEST_F(wallConditions, formerMovingWallsFileSaysWhatReplacesIt)
+{
+    const fileName dir = sphTest::makeCase("wallConditionsMovingWalls");
+    sphTest::writeFile(dir/"constant"/"movingWalls", "lid { type sliding; U (1 0); }\n");
+    auto runTime = sphTest::makeTime(dir);
+    const SPH::wallMesh walls(makeWalls(cavity));
+    const std::string msg = errorOf([&]() { SPH::wallBoundaries b(*runTime, walls); });
+    for (const char* s : {"movingWalls", "0/U", "constant/dynamicMeshDict", "uniformFixedValue"})
+    {
+        EXPECT_TRUE(has(msg, s)) << s << ": " << msg;
+    }
 }
 
 

@@ -11,6 +11,7 @@
 #include "OFstream.H"
 #include "vtkParticleFile.H"
 #include "vtkWallFile.H"
+#include "fieldDictionary.H"
 #include "usawOperators.H"
 #include "kernelDispatch.H"
 #include "mathematicalConstants.H"
@@ -128,7 +129,7 @@ void Foam::SPH::isph::readSolution()
 
 void Foam::SPH::isph::readInitialVelocity()
 {
-    const IOdictionary Udict
+    const fieldDictionary Udict
     (
         IOobject
         (
@@ -376,7 +377,7 @@ Foam::SPH::isph::isph(Time& runTime)
     readSolution();
 
     walls_.reset(new wallMesh(runTime));
-    motion_.reset(new movingWalls(runTime, *walls_));
+    motion_.reset(new wallBoundaries(runTime, *walls_));
     initialise();
 
     walls_->bounds(boxMin_, boxMax_);
