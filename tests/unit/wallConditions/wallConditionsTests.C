@@ -341,3 +341,31 @@ TEST_F(wallConditions, onlyWhatTheSolverSupports)
         EXPECT_TRUE(has(msg, s)) << s << ": " << msg;
     }
 }
+
+
+TEST_F(wallConditions, cavityTutorialSphCaseUsesTheFvCasesU)
+{
+    // tutorials/cavity: sph/0/U is fv/0/U to the byte, and its lid ramps
+    // from 0 to Ulid over tRamp (system/cavityParameters: 1 and 1 s)
+    const fileName tutorial = fileName(SPHFOAM_SOURCE_DIR)/"tutorials"/"cavity";
+    std::string out;
+    EXPECT_EQ(sphTest::run("cmp " + tutorial/"fv/0/U" + " " + tutorial/"sph/0/U", out), 0) << out;
+
+    auto runTime = sphTest::makeTime(tutorial/"fv");
+    const SPH::wallMesh walls
+    (
+        makeWalls
+        (
+            "movingWall { type line; points ((1 1) (0 1)); }"
+            " fixedWalls { type polyline; points ((0 1) (0 0) (1 0) (1 1)); }"
+        )
+    );
+    const SPH::wallConditions U(*runTime, walls, "U");
+    const label lid = walls.patchNames().find("movingWall");
+    EXPECT_EQ(U.typeName(lid), "uniformFixedValue");
+    EXPECT_NEAR(U.velocity(lid, 0.5).x(), 0.5, 1e-15);
+    EXPECT_EQ(U.velocity(lid, 5), vector2D(1, 0));
+    EXPECT_EQ(U.typeName(walls.patchNames().find("fixedWalls")), "noSlip");
+    const SPH::wallConditions p(*runTime, walls, "p");
+    EXPECT_EQ(p.typeName(lid), "zeroGradient");
+}
