@@ -25,6 +25,18 @@ Foam::SPH::wallConditions::conditionTypeNames
 
 namespace
 {
+    //- Words as "(a b c)"
+    std::string joined(const Foam::UList<Foam::word>& words)
+    {
+        std::string s("(");
+        forAll(words, i)
+        {
+            s += (i ? " " : "");
+            s += words[i];
+        }
+        return s + ")";
+    }
+
     //- Types an FV case's 0/ files give the patches that are no wall of
     //- the SPH mesh: its front and back (empty), its periodic and its
     //- processor patches. Accepted and ignored.
@@ -207,15 +219,15 @@ void Foam::SPH::wallConditions::read(const dictionary& boundaryField)
                      : " matches no wall patch"
                    )
                 << " of the SPH mesh (constant/sphMesh/walls/patchNames)" << nl
-                << "Wall patches: " << flatOutput(patches) << nl
-                << "(only entries of type " << flatOutput(ignoredTypes)
+                << "Wall patches: " << joined(patches).c_str() << nl
+                << "(only entries of type " << joined(ignoredTypes).c_str()
                 << " may name other patches)" << exit(FatalIOError);
         }
         FatalIOErrorInFunction(e.dict())
             << "No wall patch " << e.keyword() << " in the SPH mesh"
             << " (constant/sphMesh/walls/patchNames)" << nl
-            << "Wall patches: " << flatOutput(patches) << nl
-            << "(only entries of type " << flatOutput(ignoredTypes)
+            << "Wall patches: " << joined(patches).c_str() << nl
+            << "(only entries of type " << joined(ignoredTypes).c_str()
             << " may name other patches)" << exit(FatalIOError);
     }
 
@@ -228,7 +240,7 @@ void Foam::SPH::wallConditions::read(const dictionary& boundaryField)
                 << " in the boundaryField of " << boundaryField.name() << nl
                 << "Every wall patch of the SPH mesh"
                 << " (constant/sphMesh/walls/patchNames) needs one, by its"
-                << " name or a pattern: " << flatOutput(patches)
+                << " name or a pattern: " << joined(patches).c_str()
                 << exit(FatalIOError);
         }
     }
@@ -319,7 +331,7 @@ Foam::SPH::wallConditions::wallConditions
             {
                 FatalErrorInFunction
                     << "No " << file << nl
-                    << "The wall patches " << flatOutput(walls.patchNames())
+                    << "The wall patches " << joined(walls.patchNames()).c_str()
                     << " take their " << fieldName << " conditions from its"
                     << " boundaryField, as in OpenFOAM, e.g." << nl
                     << "    boundaryField" << nl
@@ -342,7 +354,7 @@ Foam::SPH::wallConditions::wallConditions
             {
                 FatalIOErrorInFunction(fieldDict)
                     << "No boundaryField in " << fieldDict.name() << ": every"
-                    << " wall patch " << flatOutput(walls.patchNames())
+                    << " wall patch " << joined(walls.patchNames()).c_str()
                     << " needs its condition there" << exit(FatalIOError);
             }
             return fieldDict.subDict("boundaryField");
@@ -412,7 +424,7 @@ void Foam::SPH::wallConditions::allowOnly
             FatalIOErrorInFunction(dict(patchi))
                 << "Wall patch " << walls_.patchNames()[patchi] << " has "
                 << fieldName_ << " type " << typeName(patchi) << ": " << who.c_str()
-                << " support only " << flatOutput(names) << exit(FatalIOError);
+                << " support only " << joined(names).c_str() << exit(FatalIOError);
         }
     }
 }

@@ -7,6 +7,21 @@
 #include "Time.H"
 #include "OStringStream.H"
 
+namespace
+{
+    //- Words as "(a b c)"
+    std::string joined(const Foam::UList<Foam::word>& words)
+    {
+        std::string s("(");
+        forAll(words, i)
+        {
+            s += (i ? " " : "");
+            s += words[i];
+        }
+        return s + ")";
+    }
+}
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::scalar Foam::SPH::wallMotion::differenceStep = 1e-6;
@@ -145,7 +160,7 @@ void Foam::SPH::wallMotion::read(const dictionary& dynamicMeshDict)
             << " of the SPH mesh (constant/sphMesh/walls/patchNames): the keys"
             << " of multiSolidBodyMotionSolverCoeffs name wall patches (where"
             << " OpenFOAM's name cellZones)" << nl
-            << "Wall patches: " << flatOutput(patches) << exit(FatalIOError);
+            << "Wall patches: " << joined(patches).c_str() << exit(FatalIOError);
     }
 
     for (const entry* e : used)
