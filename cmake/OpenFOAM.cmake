@@ -5,6 +5,7 @@
 # Defines the imported targets
 #   OpenFOAM::OpenFOAM       libOpenFOAM (+ Pstream, dl, m)
 #   OpenFOAM::finiteVolume   libfiniteVolume + libmeshTools, for tools reading FV results
+#   OpenFOAM::dynamicMesh    libdynamicMesh, for solidBodyMotionFunction
 
 execute_process(
     COMMAND dpkg-query -W -f=\${Version} openfoam
@@ -58,3 +59,11 @@ target_include_directories(OpenFOAM::finiteVolume SYSTEM INTERFACE
     "${OPENFOAM_HEADERS}/fileFormats/lnInclude")
 target_link_libraries(OpenFOAM::finiteVolume INTERFACE
     OpenFOAM::OpenFOAM finiteVolume meshTools)
+
+# libdynamicMesh: solidBodyMotionFunction (rotatingMotion, linearMotion, ...)
+# for the wall motion of constant/dynamicMeshDict
+add_library(OpenFOAM::dynamicMesh INTERFACE IMPORTED)
+target_include_directories(OpenFOAM::dynamicMesh SYSTEM INTERFACE
+    "${OPENFOAM_HEADERS}/dynamicMesh/lnInclude")
+target_link_libraries(OpenFOAM::dynamicMesh INTERFACE
+    OpenFOAM::finiteVolume dynamicMesh)

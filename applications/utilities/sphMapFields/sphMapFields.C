@@ -26,7 +26,7 @@ Usage
 
 #include "argList.H"
 #include "Time.H"
-#include "IOdictionary.H"
+#include "fieldDictionary.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "sigFpe.H"
@@ -101,8 +101,9 @@ int main(int argc, char *argv[])
             << "The source must cover this case's fluid" << exit(FatalError);
     }
 
-    // <startTime>/U: the other entries kept, written to a temporary first
-    const IOdictionary old
+    // <startTime>/U: the other entries kept (boundaryField), written to a
+    // temporary first; any class (an FV case's 0/U says volVectorField)
+    const SPH::fieldDictionary old
     (
         IOobject
         (

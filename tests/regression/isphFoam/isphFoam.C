@@ -304,6 +304,7 @@ TEST(isphFoam, startsFromAVelocityMappedFromACoarserRun)
         fine/"0"/"U",
         "FoamFile { version 2.0; format ascii; class dictionary; object U; }\n"
         "internalField nonuniform List<vector> 2((0 0 0) (0 0 0));\n"
+        "boundaryField { \".*\" { type noSlip; } }\n"
     );
     EXPECT_NE(solve(fine, out), 0);
     EXPECT_NE(out.find("one per fluid particle"), std::string::npos) << tail(out);
@@ -423,9 +424,9 @@ TEST(isphFoam, missingOrBadEntriesNameTheFileAndEntry)
         {"system/sphSchemes", "s/^boundaryMethod .*/boundaryMethod dummyRepulsive;/", "usaw"},
         {"system/sphSchemes", "s/^pressureGradient .*/pressureGradient Gplus;/", "antisymmetric"},
         {"system/sphSchemes", "s/^shiftCoeff .*/shiftCoeff -1;/", "shiftCoeff"},
-        {"constant/movingWalls", "s/^lid$/lidd/", "lidd"},
-        {"constant/movingWalls", "s/^    type .*/    type        translating;/", "rotating"},
-        {"constant/movingWalls", "s/^    U .*/    U           (0 1);/", "along itself"},
+        {"0/U", "s/^    lid$/    lidd/", "lidd"},
+        {"0/U", "s/^        type            uniformFixedValue;/        type            translating;/", "rotating"},
+        {"0/U", "s/(1 (1 0 0))/(1 (0 1 0))/", "along itself"},
     };
     label k = 0;
     for (const badEntry& c : cases)

@@ -2,16 +2,18 @@
   sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
 -------------------------------------------------------------------------------
 Description
-    The prescribed wall motions of isphFoam (constant/movingWalls): the
-    sliding and rotating motions with their ramps, which vertices move
-    (a vertex where a moving patch meets a still one stays), and the errors
-    of a bad dictionary.
+    The prescribed wall motions of isphFoam (SPH::wallBoundaries: 0/U's
+    boundaryField and constant/dynamicMeshDict, which replace the former
+    constant/movingWalls): a sliding lid ramped by a uniformFixedValue
+    table and a wall turning by rotatingMotion with a ramped omega, which
+    vertices move (a vertex where a moving patch meets a still one stays),
+    and the errors of bad entries.
 
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
 #include "testCase.H"
-#include "movingWalls.H"
+#include "wallBoundaries.H"
 #include "wallShape.H"
 #include "mathematicalConstants.H"
 
@@ -58,17 +60,49 @@ namespace
         void SetUp() override
         {
             sphTest::throwOnFatal();
+            runTime = sphTest::makeTime(sphTest::makeCase("movingWalls"));
+        }
+
+        std::unique_ptr<Time> runTime;
+
+        //- The motion from 0/U's boundaryField and a dynamicMeshDict
+        SPH::wallBoundaries make
+        (
+            const SPH::wallMesh& walls,
+            const std::string& U,
+            const std::string& dynamicMeshDict = ""
+        ) const
+        {
+            return SPH::wallBoundaries
+            (
+                sphTest::dict(U), sphTest::dict(dynamicMeshDict), *runTime, walls
+            );
         }
     };
+
+    //- constant/dynamicMeshDict of one rotatingMotion entry
+    std::string rotation(const std::string& key, const std::string& coeffs)
+    {
+        return
+            "motionSolver multiSolidBodyMotionSolver;"
+            " multiSolidBodyMotionSolverCoeffs { " + key
+          + " { solidBodyMotionFunction rotatingMotion;"
+            " rotatingMotionCoeffs { axis (0 0 1); " + coeffs + " } } }";
+    }
 }
 
 
 TEST_F(movingWalls, slidingLidRampsAndItsCornersStay)
 {
     const SPH::wallMesh walls(makeWalls(cavity));
-    const SPH::movingWalls motion
+    const SPH::wallBoundaries motion
     (
-        sphTest::dict("lid { type sliding; U (1 0); rampTime 2; }"), walls
+        make
+        (
+            walls,
+            "lid { type uniformFixedValue; uniformValue table ((0 (0 0 0)) (2 (1 0 0))); }"
+            " fixedWalls { type noSlip; }"
+        )
     );
     EXPECT_TRUE(motion.any());
     EXPECT_FALSE(motion.movesGeometry());
@@ -103,10 +137,14 @@ TEST_F(movingWalls, rotatingWallTurnsAboutItsOriginFromRest)
     (
         makeWalls("drum { type circle; centre (0.3 0.2); radius 0.5; side outside; }")
     );
-    const SPH::movingWalls motion
+    const SPH::wallBoundaries motion
     (
-        sphTest::dict("drum { type rotating; origin (0.3 0.2); omega 2; rampTime 1; }"),
-        walls
+        make
+        (
+            walls,
+            "drum { type movingWallVelocity; }",
+            rotation("drum", "origin (0.3 0.2 0); omega table ((0 0) (1 2) (100 2));")
+        )
     );
     EXPECT_TRUE(motion.movesGeometry());
 
@@ -148,9 +186,14 @@ TEST_F(movingWalls, patternEntriesMoveEveryPatchTheyMatch)
             " paddleB { type line; points ((1 0) (1 1)); }"
         )
     );
-    const SPH::movingWalls motion
+    const SPH::wallBoundaries motion
     (
-        sphTest::dict("\"paddle.*\" { type rotating; origin (0 0); omega 1; }"), walls
+        make
+        (
+            walls,
+            "\"paddle.*\" { type movingWallVelocity; }",
+            rotation("\"paddle.*\"", "origin (0 0 0); omega 1;")
+        )
     );
     // One motion for both, so their shared vertex turns with them
     EXPECT_EQ(motion.motions().size(), 1);
@@ -163,10 +206,14 @@ TEST_F(movingWalls, patternEntriesMoveEveryPatchTheyMatch)
 
 TEST_F(movingWalls, noFileMeansNoMotion)
 {
+    // No constant/dynamicMeshDict, and still walls in 0/U and 0/p
     const fileName dir = sphTest::makeCase("movingWallsNone");
+    const std::string head = "FoamFile { version 2.0; format ascii; class volVectorField; object U; }\n";
+    sphTest::writeFile(dir/"0"/"U", head + "boundaryField { \".*\" { type noSlip; } }\n");
+    sphTest::writeFile(dir/"0"/"p", head + "boundaryField { \".*\" { type zeroGradient; } }\n");
     auto runTime = sphTest::makeTime(dir);
     const SPH::wallMesh walls(makeWalls(cavity));
-    const SPH::movingWalls motion(*runTime, walls);
+    const SPH::wallBoundaries motion(*runTime, walls);
     EXPECT_FALSE(motion.any());
     EXPECT_FALSE(motion.movesGeometry());
 }
@@ -175,38 +222,42 @@ TEST_F(movingWalls, noFileMeansNoMotion)
 TEST_F(movingWalls, badEntriesAreErrorsNamingThem)
 {
     const SPH::wallMesh walls(makeWalls(cavity));
-    auto make = [&](const std::string& text)
+    const std::string still = " fixedWalls { type noSlip; }";
+    auto make = [&](const std::string& U, const std::string& dynamicMeshDict = "")
     {
-        return [&walls, text]() { SPH::movingWalls m(sphTest::dict(text), walls); };
+        return [this, &walls, U, dynamicMeshDict]()
+        {
+            SPH::wallBoundaries m(this->make(walls, U, dynamicMeshDict));
+        };
     };
 
     // An unknown patch, and the patches there are
-    std::string msg = errorOf(make("lidd { type sliding; U (1 0); }"));
+    std::string msg = errorOf(make("lidd { type fixedValue; value uniform (1 0 0); }" + still));
     EXPECT_NE(msg.find("lidd"), std::string::npos) << msg;
     EXPECT_NE(msg.find("fixedWalls"), std::string::npos) << msg;
 
     // A pattern that matches nothing
-    msg = errorOf(make("\"wall.*\" { type sliding; U (1 0); }"));
+    msg = errorOf(make("\"wall.*\" { type fixedValue; value uniform (1 0 0); } lid { type noSlip; }" + still));
     EXPECT_NE(msg.find("matches no wall patch"), std::string::npos) << msg;
 
     // An unknown motion, and the motions there are
-    msg = errorOf(make("lid { type translating; U (1 0); }"));
+    msg = errorOf(make("lid { type translating; }" + still));
     for (const char* s : {"translating", "sliding", "rotating"})
     {
         EXPECT_NE(msg.find(s), std::string::npos) << msg;
     }
 
     // A sliding wall that would move through itself
-    msg = errorOf(make("lid { type sliding; U (0.6 0.8); }"));
+    msg = errorOf(make("lid { type fixedValue; value uniform (0.6 0.8 0); }" + still));
     EXPECT_NE(msg.find("along itself"), std::string::npos) << msg;
 
     // A rotating patch that shares a vertex with a still one
-    msg = errorOf(make("lid { type rotating; origin (0.5 0.5); omega 1; }"));
+    msg = errorOf(make("lid { type movingWallVelocity; }" + still, rotation("lid", "origin (0.5 0.5 0); omega 1;")));
     EXPECT_NE(msg.find("tear"), std::string::npos) << msg;
 
     // Missing entries
-    msg = errorOf(make("lid { type sliding; }"));
+    msg = errorOf(make("lid { type fixedValue; }" + still));
     EXPECT_NE(msg.find("U"), std::string::npos) << msg;
-    msg = errorOf(make("lid { type sliding; U (1 0); rampTime -1; }"));
+    msg = errorOf(make("lid { type uniformFixedValue; uniformValue constant (1 0 0); rampTime -1; }" + still));
     EXPECT_NE(msg.find("rampTime"), std::string::npos) << msg;
 }

@@ -8,6 +8,7 @@
 #include "OSspecific.H"
 #include "vtkParticleFile.H"
 #include "vtkWallFile.H"
+#include "fieldDictionary.H"
 #include "mathematicalConstants.H"
 #include "drift.H"
 #include "moveWalls.H"
@@ -57,7 +58,7 @@ namespace
 
 void Foam::SPH::isph::readInitialVelocity()
 {
-    const IOdictionary Udict
+    const fieldDictionary Udict
     (
         IOobject
         (
@@ -381,7 +382,7 @@ Foam::SPH::isph::isph(Time& runTime)
     boundaryMethodNames.get("boundaryMethod", schemes_);
     kernel_ = kernel::New(schemes_, dr_);
     walls_.reset(new wallMesh(runTime));
-    motion_.reset(new movingWalls(runTime, *walls_));
+    motion_.reset(new wallBoundaries(runTime, *walls_));
     buildCloud();
     addStages();
 }

@@ -13,6 +13,8 @@
 #include "vtkCaseWriter.H"
 #include "vtkParticleFile.H"
 #include "vtkWallFile.H"
+#include "wallConditions.H"
+#include "fieldDictionary.H"
 
 #include <cmath>
 #include <chrono>
@@ -167,7 +169,7 @@ void Foam::SPH::wcsph::setInitialFields()
     const word t0(runTime_.timeName());
     auto initialDict = [&](const word& name)
     {
-        return IOdictionary
+        return fieldDictionary
         (
             IOobject
             (
@@ -181,7 +183,7 @@ void Foam::SPH::wcsph::setInitialFields()
     scalarField& p = parts_.field<scalar>("p");
     scalarField& rho = parts_.field<scalar>("rho");
 
-    const IOdictionary Udict(initialDict("U"));
+    const fieldDictionary Udict(initialDict("U"));
     vector2D U0(vector2D::zero);
     if (Udict.found("internalField"))
     {
@@ -202,7 +204,7 @@ void Foam::SPH::wcsph::setInitialFields()
         Info<< "No " << t0/"U" << ": the fluid starts at rest" << nl;
     }
 
-    const IOdictionary pDict(initialDict("p"));
+    const fieldDictionary pDict(initialDict("p"));
     const scalar gMag = mag(g_);
     for (label i = 0; i < nFluid_; ++i)
     {
@@ -359,6 +361,12 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     }
     kernel_ = kernel::New(schemes_, dr_);
     readSchemes();
+    wallConditions(runTime, *walls_, "U").allowOnly
+    (
+        {wallConditions::conditionType::noSlip},
+        "the dummy and repulsive walls of wcsphFoam (still walls)"
+    );
+    wallConditions(runTime, *walls_, "p");
     skin_ = skinByH_*kernel_->h();
     initialise();
 
