@@ -268,11 +268,16 @@ void Foam::SPH::domain::report(Ostream& os) const
         os  << "Domain: not periodic, box " << min_ << " to " << max_ << nl;
         return;
     }
-    os  << "Domain: periodic in " << directionNames() << nl;
+    os  << "Domain: periodic in";
+    for (const word& w : directionNames())
+    {
+        os  << ' ' << w;
+    }
+    os  << nl;
     for (direction d = 0; d < 2; ++d)
     {
         os  << "    " << axisNames[d] << ": [" << min_[d] << ", " << max_[d]
-            << (periodic_[d] ? "), period " : "], walls' extent ");
+            << (periodic_[d] ? "), period " : "], the walls' extent");
         if (periodic_[d])
         {
             os  << period_[d];
