@@ -258,6 +258,42 @@ TEST(periodicChannel, dummyLayersTileAcrossTheSeam)
 }
 
 
+TEST(periodicChannel, aBoxPeriodicInXAndYNeedsNoWalls)
+{
+    // The Taylor-Green vortex's box: the channel without its walls,
+    // periodic in y too; the nodes k dr tile both periods
+    const fileName dir = copyChannel("periodicBoxXY");
+    edit(dir/"system"/"sphMeshDict", "directions  (x);", "directions  (x y);");
+    edit
+    (
+        dir/"system"/"sphMeshDict",
+        "    lowerWall   { type line; points ((0 0) (1 0)); }\n"
+        "    upperWall   { type line; points ((1 1) (0 1)); }\n",
+        ""
+    );
+    std::string out;
+    ASSERT_EQ(run(sphMeshExe + " -case " + dir, out), 0) << out;
+    EXPECT_NE(out.find("Domain: periodic in x y"), std::string::npos) << out;
+
+    auto runTime = sphTest::makeTime(dir);
+    const List<vector2D> fluid(readPositions(*runTime, "fluid"));
+    EXPECT_EQ(fluid.size(), 20*20);
+    EXPECT_EQ(distinct(fluid, 0).size(), 20u);
+    EXPECT_EQ(distinct(fluid, 1).size(), 20u);
+    EXPECT_EQ(*distinct(fluid, 1).begin(), 0);
+
+    const SPH::wallMesh walls(*runTime);
+    EXPECT_EQ(walls.points().size(), 0);
+    EXPECT_TRUE(walls.domain().periodic(0) && walls.domain().periodic(1));
+    EXPECT_NEAR(closestPair(walls.domain(), fluid), dr, 1e-12);
+
+    // Without the periodicity in y the walls are missing
+    edit(dir/"system"/"sphMeshDict", "directions  (x y);", "directions  (x);");
+    EXPECT_EQ(run(sphMeshExe + " -case " + dir, out), 1) << out;
+    EXPECT_NE(out.find("walls"), std::string::npos) << out;
+}
+
+
 TEST(periodicChannel, periodNotAWholeNumberOfSpacingsNamesTheEntry)
 {
     const std::string out = failingRun

@@ -318,6 +318,10 @@ TEST(domain, badPeriodicEntriesAreFatalIOErrors)
 
     const std::string missing(message("periodic { directions (x); min (0 0); }"));
     EXPECT_NE(missing.find("max"), std::string::npos) << missing;
+
+    // Not silently ignored when it is not a dictionary
+    const std::string word(message("periodic (x);"));
+    EXPECT_NE(word.find("must be a dictionary"), std::string::npos) << word;
 }
 
 

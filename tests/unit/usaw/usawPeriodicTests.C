@@ -207,6 +207,37 @@ TEST(usawWallsPeriodic, segmentsThroughTheSeamAreOneSpacingLong)
 }
 
 
+TEST(usawWallsPeriodic, noWallsInABoxPeriodicInXAndY)
+{
+    // A Taylor-Green box: no segment, gamma 1 everywhere
+    sphTest::throwOnFatal();
+    const autoPtr<SPH::kernel> W(makeKernel(dr));
+    const SPH::domain box(vector2D(0, 0), vector2D(1, 1), {true, true});
+    const SPH::wallMesh none(wordList(), List<List<SPH::wallChain>>(), dr, box);
+    EXPECT_EQ(none.segments().size(), 0);
+    SPH::usawWalls usaw(none, *W, 0);
+    const List<vector2D> x({vector2D(0, 0), vector2D(0.5, 0.99), vector2D(-3, 7)});
+    usaw.update(x);
+    for (label a = 0; a < x.size(); ++a)
+    {
+        EXPECT_EQ(usaw.gamma()[a], 1);
+        EXPECT_EQ(usaw.gradGamma()[a], vector2D::zero);
+        EXPECT_EQ(usaw.offsets()[a + 1], 0);
+    }
+
+    // Walls are needed when a direction is not periodic
+    EXPECT_THROW
+    (
+        SPH::wallMesh
+        (
+            wordList(), List<List<SPH::wallChain>>(), dr,
+            SPH::domain(vector2D(0, 0), vector2D(1, 1), {true, false})
+        ),
+        Foam::error
+    );
+}
+
+
 TEST(usawWallsPeriodic, periodicWallsNeedAPeriodicSearch)
 {
     sphTest::throwOnFatal();

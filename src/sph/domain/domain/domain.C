@@ -149,6 +149,13 @@ Foam::SPH::domain::domain
     const dictionary* pd = dict.findDict("periodic");
     if (!pd)
     {
+        if (dict.found("periodic"))
+        {
+            FatalIOErrorInFunction(dict.lookup("periodic"))
+                << "Entry 'periodic' must be a dictionary:" << nl
+                << "    periodic { directions (x); min (0 0); max (1 1); }"
+                << nl << exit(FatalIOError);
+        }
         return;
     }
 

@@ -257,8 +257,19 @@ void Foam::SPH::particleGenerator::makeWalls
 
 void Foam::SPH::particleGenerator::checkSpacing() const
 {
+    // The walls' extent, or the period in a periodic direction (which
+    // walls need not span)
+    const SPH::domain& dom = walls_->domain();
     vector2D lo, hi;
     walls_->bounds(lo, hi);
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (dom.periodic(d))
+        {
+            lo[d] = dom.min()[d];
+            hi[d] = dom.max()[d];
+        }
+    }
     const scalar extent = max(hi.x() - lo.x(), hi.y() - lo.y());
     if (dr_ >= extent)
     {
@@ -281,16 +292,24 @@ void Foam::SPH::particleGenerator::seedFluid
     // USAW: the nodes k dr of the walls' corner, so that straight walls
     // through it carry the lattice's edge nodes (the vertex particles,
     // truncated fluid particles of 000_... section 2) and the first fluid
-    // row lies dr from them
+    // row lies dr from them. In a periodic direction the corner is the
+    // periodic box's, walls or not
+    const SPH::domain& dom = walls_->domain();
     vector2D wlo, whi;
     walls_->bounds(wlo, whi);
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (dom.periodic(d))
+        {
+            wlo[d] = dom.min()[d];
+        }
+    }
     const vector2D corner(usaw_ ? wlo - 0.5*vector2D(dr_, dr_) : wlo);
     const vector2D origin(dict_.getOrDefault<vector2D>("latticeOrigin", corner));
 
     // Lattice indices covering [lo, hi]; in a periodic direction exactly
     // one period of them from the first node at or above min, so that the
     // lattice tiles [min, max) and continues across the seam
-    const SPH::domain& dom = walls_->domain();
     FixedList<label, 2> first, last;
     for (direction d = 0; d < 2; ++d)
     {
@@ -406,7 +425,15 @@ Foam::SPH::particleGenerator::particleGenerator
     }
     else
     {
-        const dictionary& wallsDict = dict_.subDict("walls");
+        // A domain periodic in x and y needs no walls
+        const FixedList<bool, 2> periodic
+        (
+            SPH::domain(dict_, vector2D::zero, vector2D::zero).periodic()
+        );
+        const dictionary& wallsDict =
+            (periodic[0] && periodic[1])
+          ? dict_.subOrEmptyDict("walls")
+          : dict_.subDict("walls");
         wordList names(wallsDict.toc());
         List<List<wallChain>> chains(names.size());
         label n = 0;

@@ -234,11 +234,13 @@ Foam::SPH::wallMesh::wallMesh
             addChain(c, patchi, dr);
         }
     }
-    if (segments_.empty())
+    // Only a domain periodic in x and y can do without walls (a
+    // Taylor-Green vortex)
+    if (segments_.empty() && !(domain_.periodic(0) && domain_.periodic(1)))
     {
         FatalErrorInFunction
-            << "No wall segments: at least one wall patch is needed"
-            << exit(FatalError);
+            << "No wall segments: at least one wall patch is needed, unless"
+            << " the domain is periodic in x and y" << exit(FatalError);
     }
     calcGeometry();
 }
