@@ -51,10 +51,28 @@ void Foam::SPH::writeSphMeshVTK(const Time& runTime, const particleGenerator& ge
     particleFile.addPointField("layer", layer);
     vtk.writeParticles(particleFile, runTime.timeIndex(), runTime.value());
 
-    vtkWallFile wallFile(walls.points(), walls.segments());
+    // A segment through a periodic seam is drawn to the image of its
+    // second vertex, not across the domain: that image is an extra point
+    DynamicList<vector2D> wallPoints(walls.points());
+    DynamicList<scalar> angles(walls.pointAngles());
+    List<labelPair> segments(walls.segments());
+    forAll(segments, s)
+    {
+        const vector2D& a = walls.points()[segments[s].first()];
+        const vector2D& b = walls.points()[segments[s].second()];
+        const vector2D bImage(walls.domain().image(b, a));
+        if (bImage != b)
+        {
+            angles.append(walls.pointAngles()[segments[s].second()]);
+            segments[s].second() = wallPoints.size();
+            wallPoints.append(bImage);
+        }
+    }
+
+    vtkWallFile wallFile(wallPoints, segments);
     wallFile.addCellField("normal", walls.segmentNormals());
     wallFile.addCellField("patch", walls.segmentPatch());
-    wallFile.addPointField("angle", walls.pointAngles());
+    wallFile.addPointField("angle", angles);
     vtk.writeWalls(wallFile, runTime.timeIndex(), runTime.value());
 
     Info<< "Written " << vtk.particleFile(runTime.timeIndex()) << nl

@@ -17,30 +17,42 @@ namespace
 
 Foam::SPH::wallCrossing::wallCrossing(const wallMesh& walls, const scalar cellSize)
 :
-    walls_(walls),
-    cell_(cellSize)
+    walls_(walls)
 {
-    vector2D hi;
-    walls.bounds(min_, hi);
-    min_ -= vector2D(cell_, cell_);
-    nx_ = label((hi.x() - min_.x())/cell_) + 2;
-    ny_ = label((hi.y() - min_.y())/cell_) + 2;
+    const SPH::domain& dom = walls.domain();
+    vector2D lo, hi;
+    walls.bounds(lo, hi);
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (dom.periodic(d))
+        {
+            min_[d] = dom.min()[d];
+            n_[d] = max(label(1), label(std::floor(dom.period()[d]/cellSize)));
+            cell_[d] = dom.period()[d]/n_[d];
+        }
+        else
+        {
+            min_[d] = lo[d] - cellSize;
+            cell_[d] = cellSize;
+            n_[d] = label((hi[d] - min_[d])/cellSize) + 2;
+        }
+    }
 
-    // Each segment goes into every bin its bounding box touches
-    List<DynamicList<label>> bins(nx_*ny_);
+    // Each segment goes into every bin its bounding box touches; a segment
+    // through a periodic seam is its minimum image, its bins wrapped
+    List<DynamicList<label>> bins(n_[0]*n_[1]);
     forAll(walls.segments(), s)
     {
         const vector2D& a = walls.points()[walls.segments()[s].first()];
-        const vector2D& b = walls.points()[walls.segments()[s].second()];
-        const label i0 = label((min(a.x(), b.x()) - min_.x())/cell_);
-        const label i1 = label((max(a.x(), b.x()) - min_.x())/cell_);
-        const label j0 = label((min(a.y(), b.y()) - min_.y())/cell_);
-        const label j1 = label((max(a.y(), b.y()) - min_.y())/cell_);
+        const vector2D b(dom.image(walls.points()[walls.segments()[s].second()], a));
+        label i0, i1, j0, j1;
+        binRange(min(a.x(), b.x()), max(a.x(), b.x()), 0, i0, i1);
+        binRange(min(a.y(), b.y()), max(a.y(), b.y()), 1, j0, j1);
         for (label j = j0; j <= j1; ++j)
         {
             for (label i = i0; i <= i1; ++i)
             {
-                bins[bin(i, j)].append(s);
+                bins[bin(wrapCoord(i, 0), wrapCoord(j, 1))].append(s);
             }
         }
     }
@@ -63,17 +75,55 @@ Foam::SPH::wallCrossing::wallCrossing(const wallMesh& walls, const scalar cellSi
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::SPH::wallCrossing::binRange
+(
+    const scalar lo,
+    const scalar hi,
+    const direction d,
+    label& c0,
+    label& c1
+) const
+{
+    if (!walls_.domain().periodic(d))
+    {
+        // Truncation, as the coordinates are above min_ in the grid
+        const auto clamp = [&](scalar x)
+        {
+            return max(label(0), min(n_[d] - 1, label((x - min_[d])/cell_[d])));
+        };
+        c0 = clamp(lo);
+        c1 = clamp(hi);
+        return;
+    }
+
+    // Positions may be unwrapped: the bins a period away are the same
+    const scalar L = walls_.domain().period()[d];
+    const scalar base = std::floor((lo - min_[d])/L);
+    const scalar shift = min_[d] + base*L;
+    c0 = label(std::floor((lo - shift)/cell_[d]));
+    c1 = label(std::floor((hi - shift)/cell_[d]));
+    if (c1 - c0 + 1 >= n_[d])
+    {
+        c0 = 0;
+        c1 = n_[d] - 1;
+    }
+}
+
+
 Foam::label Foam::SPH::wallCrossing::firstCrossing
 (
     const vector2D& a,
-    const vector2D& b,
+    const vector2D& bGiven,
     scalar& tFirst
 ) const
 {
-    const auto clampI = [&](scalar x) { return max(label(0), min(nx_ - 1, label((x - min_.x())/cell_))); };
-    const auto clampJ = [&](scalar y) { return max(label(0), min(ny_ - 1, label((y - min_.y())/cell_))); };
-    const label i0 = clampI(min(a.x(), b.x())), i1 = clampI(max(a.x(), b.x()));
-    const label j0 = clampJ(min(a.y(), b.y())), j1 = clampJ(max(a.y(), b.y()));
+    // The move's minimum image: its end next to its start
+    const SPH::domain& dom = walls_.domain();
+    const vector2D b(dom.image(bGiven, a));
+
+    label i0, i1, j0, j1;
+    binRange(min(a.x(), b.x()), max(a.x(), b.x()), 0, i0, i1);
+    binRange(min(a.y(), b.y()), max(a.y(), b.y()), 1, j0, j1);
 
     const vector2D d = b - a;
     label found = -1;
@@ -82,12 +132,13 @@ Foam::label Foam::SPH::wallCrossing::firstCrossing
     {
         for (label i = i0; i <= i1; ++i)
         {
-            const label k = bin(i, j);
+            const label k = bin(wrapCoord(i, 0), wrapCoord(j, 1));
             for (label m = binStart_[k]; m < binStart_[k + 1]; ++m)
             {
+                // The segment's image next to the move
                 const label s = binSegments_[m];
-                const vector2D& p = walls_.points()[walls_.segments()[s].first()];
-                const vector2D e = walls_.points()[walls_.segments()[s].second()] - p;
+                const vector2D p(dom.image(walls_.points()[walls_.segments()[s].first()], a));
+                const vector2D e(walls_.segmentVector(s));
 
                 // Only moves from the fluid side to the other side count
                 const vector2D& n = walls_.segmentNormals()[s];
@@ -138,7 +189,10 @@ Foam::label Foam::SPH::wallCrossing::bounce
                 x[i] = x0[i];
                 break;
             }
-            const vector2D& p = walls_.points()[walls_.segments()[s].first()];
+            const vector2D p
+            (
+                walls_.domain().image(walls_.points()[walls_.segments()[s].first()], x[i])
+            );
             const vector2D& nrm = walls_.segmentNormals()[s];
             x[i] -= 2*((x[i] - p) & nrm)*nrm;
             const scalar un = U[i] & nrm;

@@ -89,10 +89,187 @@ Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
 }
 
 
-void Foam::SPH::particleGenerator::checkSpacing() const
+const Foam::dictionary& Foam::SPH::particleGenerator::patchDict
+(
+    const word& patch
+) const
+{
+    const dictionary* walls = dict_.findDict("walls");
+    if (walls && walls->findDict(patch))
+    {
+        return walls->subDict(patch);
+    }
+    return dict_;
+}
+
+
+void Foam::SPH::particleGenerator::checkPeriodic
+(
+    const SPH::domain& dom,
+    const wordList& patchNames,
+    const List<List<wallChain>>& patchChains
+) const
+{
+    if (!dom.anyPeriodic())
+    {
+        return;
+    }
+    const dictionary& pd = dict_.subDict("periodic");
+
+    // The lattice continues across the seam only if the period is a whole
+    // number of spacings
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (!dom.periodic(d))
+        {
+            continue;
+        }
+        const scalar L = dom.period()[d];
+        const scalar n = L/dr_;
+        const scalar nLo = std::floor(n + 1e-6);
+        const scalar nHi = nLo + 1;
+        if (mag(n - std::round(n)) > 1e-6)
+        {
+            FatalIOErrorInFunction(pd)
+                << "Entry 'periodic': the period in " << SPH::domain::axisNames[d]
+                << ", max - min = " << L << ", is " << n << " spacings dr = "
+                << dr_ << "; it must be a whole number of them, so that the"
+                << " particle lattice continues across the seam." << nl
+                << "Nearest valid periods: " << nLo*dr_ << " (" << nLo
+                << " dr) or " << nHi*dr_ << " (" << nHi << " dr); or keep the"
+                << " period and take dr = " << L/max(nLo, scalar(1)) << " or "
+                << L/nHi << nl << exit(FatalIOError);
+        }
+    }
+
+    // A wall may end on a seam, never run beyond it
+    const scalar tol = 1e-6*dr_;
+    forAll(patchChains, patchi)
+    {
+        for (const wallChain& c : patchChains[patchi])
+        {
+            for (const vector2D& p : c.points)
+            {
+                for (direction d = 0; d < 2; ++d)
+                {
+                    if
+                    (
+                        dom.periodic(d)
+                     && (p[d] < dom.min()[d] - tol || p[d] > dom.max()[d] + tol)
+                    )
+                    {
+                        FatalIOErrorInFunction(patchDict(patchNames[patchi]))
+                            << "Wall patch " << patchNames[patchi] << ": point "
+                            << p << " lies outside the periodic box, "
+                            << SPH::domain::axisNames[d] << " from " << dom.min()[d]
+                            << " to " << dom.max()[d] << " (entry 'periodic' of "
+                            << "system/sphMeshDict). A wall that crosses the"
+                            << " seam ends on it and continues from its image"
+                            << " on the other side." << nl << exit(FatalIOError);
+                    }
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::SPH::particleGenerator::checkSeams() const
+{
+    const SPH::domain& dom = walls_->domain();
+    if (!dom.anyPeriodic())
+    {
+        return;
+    }
+    const scalar tol = 1e-6*dr_;
+
+    const labelList ends(walls_->unmatchedSeamEnds(tol));
+    if (ends.size())
+    {
+        // Each end as the point in the box and the same point across the
+        // seam, the one the user may have written
+        auto across = [&](const vector2D& p)
+        {
+            vector2D other(p);
+            for (direction d = 0; d < 2; ++d)
+            {
+                if (dom.periodic(d) && mag(p[d] - dom.min()[d]) <= tol)
+                {
+                    other[d] += dom.period()[d];
+                }
+            }
+            return other;
+        };
+        const label v0 = ends.first();
+        const word& patch = walls_->patchNames()[walls_->pointPatch()[v0]];
+
+        FatalIOErrorInFunction(patchDict(patch))
+            << "Wall patch " << patch << " ends on a periodic seam where no"
+            << " wall continues on the other side. Wall ends on a seam with no"
+            << " partner at their image:" << nl;
+        for (const label v : ends)
+        {
+            const vector2D& p = walls_->points()[v];
+            FatalIOError
+                << "    " << walls_->patchNames()[walls_->pointPatch()[v]]
+                << " at " << p << " = " << across(p) << nl;
+        }
+        FatalIOError
+            << "A wall that crosses a periodic seam must continue from its"
+            << " image, the same point a period away (the same y on both"
+            << " sides of a seam in x), where sphMesh joins the two." << nl
+            << exit(FatalIOError);
+    }
+
+    const labelList along(walls_->seamSegments(tol));
+    if (along.size())
+    {
+        const label s = along.first();
+        const word& patch = walls_->patchNames()[walls_->segmentPatch()[s]];
+        FatalIOErrorInFunction(patchDict(patch))
+            << "Wall patch " << patch << " runs along a periodic seam (segment"
+            << " from " << walls_->points()[walls_->segments()[s].first()]
+            << " to " << walls_->points()[walls_->segments()[s].second()]
+            << "): it would lie on its own periodic image. Remove the wall"
+            << " there or the periodicity (entry 'periodic' of system/sphMeshDict"
+            << ")." << nl << exit(FatalIOError);
+    }
+}
+
+
+void Foam::SPH::particleGenerator::makeWalls
+(
+    const wordList& patchNames,
+    const List<List<wallChain>>& patchChains
+)
 {
     vector2D lo, hi;
+    wallMesh::chainBounds(patchChains, lo, hi);
+    const SPH::domain dom(dict_, lo, hi);
+    checkPeriodic(dom, patchNames, patchChains);
+
+    walls_.reset(new wallMesh(patchNames, patchChains, dr_, dom));
+    walls_->domain().report(Info);
+    checkSeams();
+    checkSpacing();
+}
+
+
+void Foam::SPH::particleGenerator::checkSpacing() const
+{
+    // The walls' extent, or the period in a periodic direction (which
+    // walls need not span)
+    const SPH::domain& dom = walls_->domain();
+    vector2D lo, hi;
     walls_->bounds(lo, hi);
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (dom.periodic(d))
+        {
+            lo[d] = dom.min()[d];
+            hi[d] = dom.max()[d];
+        }
+    }
     const scalar extent = max(hi.x() - lo.x(), hi.y() - lo.y());
     if (dr_ >= extent)
     {
@@ -115,17 +292,40 @@ void Foam::SPH::particleGenerator::seedFluid
     // USAW: the nodes k dr of the walls' corner, so that straight walls
     // through it carry the lattice's edge nodes (the vertex particles,
     // truncated fluid particles of 000_... section 2) and the first fluid
-    // row lies dr from them
+    // row lies dr from them. In a periodic direction the corner is the
+    // periodic box's, walls or not
+    const SPH::domain& dom = walls_->domain();
     vector2D wlo, whi;
     walls_->bounds(wlo, whi);
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (dom.periodic(d))
+        {
+            wlo[d] = dom.min()[d];
+        }
+    }
     const vector2D corner(usaw_ ? wlo - 0.5*vector2D(dr_, dr_) : wlo);
     const vector2D origin(dict_.getOrDefault<vector2D>("latticeOrigin", corner));
 
-    // Lattice indices covering [lo, hi]
-    const label i0 = label(std::floor((lo.x() - origin.x())/dr_ - 0.5));
-    const label i1 = label(std::ceil((hi.x() - origin.x())/dr_ - 0.5));
-    const label j0 = label(std::floor((lo.y() - origin.y())/dr_ - 0.5));
-    const label j1 = label(std::ceil((hi.y() - origin.y())/dr_ - 0.5));
+    // Lattice indices covering [lo, hi]; in a periodic direction exactly
+    // one period of them from the first node at or above min, so that the
+    // lattice tiles [min, max) and continues across the seam
+    FixedList<label, 2> first, last;
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (dom.periodic(d))
+        {
+            first[d] = label(std::ceil((dom.min()[d] - origin[d])/dr_ - 0.5 - 1e-6));
+            last[d] = first[d] + label(std::round(dom.period()[d]/dr_)) - 1;
+        }
+        else
+        {
+            first[d] = label(std::floor((lo[d] - origin[d])/dr_ - 0.5));
+            last[d] = label(std::ceil((hi[d] - origin[d])/dr_ - 0.5));
+        }
+    }
+    const label i0 = first[0], i1 = last[0];
+    const label j0 = first[1], j1 = last[1];
 
     // dr/2 from the walls, less round-off
     const scalar minDist = 0.5*dr_*(1 - 1e-6);
@@ -137,7 +337,8 @@ void Foam::SPH::particleGenerator::seedFluid
     {
         for (label i = i0; i <= i1; ++i)
         {
-            const vector2D p(origin + dr_*vector2D(i + 0.5, j + 0.5));
+            // Wrapped: a node a rounding below min is min itself
+            const vector2D p(dom.wrap(origin + dr_*vector2D(i + 0.5, j + 0.5)));
             if (!isFluid(p))
             {
                 continue;
@@ -199,8 +400,7 @@ Foam::SPH::particleGenerator::particleGenerator
         const dictionary& pmDict = dict_.subOrEmptyDict("fromPolyMesh");
         const wordList patches(pmDict.getOrDefault<wordList>("wallPatches", wordList()));
         polyMeshWalls pm(*mesh, patches);
-        walls_.reset(new wallMesh(pm.patchNames(), pm.chains(), dr_));
-        checkSpacing();
+        makeWalls(pm.patchNames(), pm.chains());
 
         vector2D lo, hi;
         pm.bounds(lo, hi);
@@ -225,7 +425,15 @@ Foam::SPH::particleGenerator::particleGenerator
     }
     else
     {
-        const dictionary& wallsDict = dict_.subDict("walls");
+        // A domain periodic in x and y needs no walls
+        const FixedList<bool, 2> periodic
+        (
+            SPH::domain(dict_, vector2D::zero, vector2D::zero).periodic()
+        );
+        const dictionary& wallsDict =
+            (periodic[0] && periodic[1])
+          ? dict_.subOrEmptyDict("walls")
+          : dict_.subDict("walls");
         wordList names(wallsDict.toc());
         List<List<wallChain>> chains(names.size());
         label n = 0;
@@ -238,8 +446,7 @@ Foam::SPH::particleGenerator::particleGenerator
         }
         names.setSize(n);
         chains.setSize(n);
-        walls_.reset(new wallMesh(names, chains, dr_));
-        checkSpacing();
+        makeWalls(names, chains);
 
         const fluidRegion regions(dict_.subDict("fluid"));
         vector2D lo, hi;
@@ -309,6 +516,7 @@ void Foam::SPH::particleGenerator::write() const
     dummy.write();
 
     walls_->write(runTime_);
+    walls_->domain().write(runTime_);
 
     Info<< "Written " << runTime_.path()/inst/"sphMesh" << nl;
 }

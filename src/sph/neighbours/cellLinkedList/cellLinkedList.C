@@ -192,6 +192,16 @@ Foam::SPH::cellLinkedList::cellLinkedList
 }
 
 
+Foam::SPH::cellLinkedList::cellLinkedList
+(
+    const domain& dom,
+    const scalar radius
+)
+:
+    cellLinkedList(dom.min(), dom.max(), radius, dom.periodic())
+{}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::SPH::cellLinkedList::maxRadius() const

@@ -262,8 +262,8 @@ void Foam::SPH::usaw::renormalisation
     const vector2D* X = x.cdata();
     const labelPair* ends = walls.segmentParticles().cdata();
 
-    // G-{r} of eq. (8) with the minimum-image r_ab, inverted: a particle
-    // whose neighbours do not span the plane keeps the identity
+    // G-{r} of eq. (8) with the minimum-image r_ab and r_as, inverted: a
+    // particle whose neighbours do not span the plane keeps the identity
     detail::sumOverNeighboursAndWalls<tensor2D>
     (
         nbrs,
@@ -274,7 +274,8 @@ void Foam::SPH::usaw::renormalisation
         },
         [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
         {
-            return gradGammaAs*(X[i] - detail::segmentValue(ends, X, s));
+            return gradGammaAs
+               *walls.fromSegment(X[i], X[ends[s].first()], X[ends[s].second()]);
         },
         result,
         [minDet](const label, const tensor2D& M)

@@ -27,6 +27,33 @@ Foam::scalar Foam::SPH::usawWalls::wendlandH(const kernel& W)
 }
 
 
+void Foam::SPH::usawWalls::checkDomain() const
+{
+    const SPH::domain& wd = walls_.domain();
+    for (direction d = 0; d < 2; ++d)
+    {
+        if
+        (
+            wd.periodic(d)
+         && (
+                !domain_.periodic(d)
+             || mag(wd.period()[d] - domain_.period()[d]) > 1e-9*wd.period()[d]
+            )
+        )
+        {
+            FatalErrorInFunction
+                << "The walls are periodic in " << SPH::domain::axisNames[d]
+                << " with period " << wd.period()[d] << " (constant/sphMesh/"
+                << SPH::domain::dictName << "), the USAW segment search "
+                << (domain_.periodic(d) ? "with period " : "is not periodic")
+                << (domain_.periodic(d) ? Foam::name(domain_.period()[d]) : "")
+                << ": walls joined through a seam need it"
+                << exit(FatalError);
+        }
+    }
+}
+
+
 void Foam::SPH::usawWalls::setGeometry(const UList<vector2D>& points)
 {
     const List<labelPair>& segs = walls_.segments();
@@ -50,8 +77,10 @@ void Foam::SPH::usawWalls::setGeometry(const UList<vector2D>& points)
 
     forAll(segs, s)
     {
+        // The second vertex's image nearest the first: a segment through a
+        // periodic seam is as long as the others, not a period
         const vector2D& p1 = points[segs[s].first()];
-        const vector2D& p2 = points[segs[s].second()];
+        const vector2D p2(domain_.image(points[segs[s].second()], p1));
         const vector2D e(p2 - p1);
         const scalar L = mag(e);
         if (!(L > 0))
@@ -60,7 +89,7 @@ void Foam::SPH::usawWalls::setGeometry(const UList<vector2D>& points)
                 << "Wall segment " << s << " from " << p1 << " to " << p2
                 << " has no length" << exit(FatalError);
         }
-        mid_[s] = 0.5*(p1 + p2);
+        mid_[s] = domain_.wrap(0.5*(p1 + p2));
         tangent_[s] = e/L;
 
         // Fluid on the left of the segment (wallMesh): the inward normal is
@@ -81,10 +110,10 @@ void Foam::SPH::usawWalls::setGeometry(const UList<vector2D>& points)
     // margin (a straight wall has none of its own); positions outside it
     // are still found, only less efficiently
     const scalar radius = support_ + maxHalfLength_;
-    vector2D lo(boxMin_), hi(boxMax_);
+    vector2D lo(domain_.min()), hi(domain_.max());
     for (direction d = 0; d < 2; ++d)
     {
-        if (!periodic_[d])
+        if (!domain_.periodic(d))
         {
             lo[d] = GREAT;
             hi[d] = -GREAT;
@@ -98,7 +127,7 @@ void Foam::SPH::usawWalls::setGeometry(const UList<vector2D>& points)
         }
     }
 
-    cells_.reset(new cellLinkedList(lo, hi, radius, periodic_));
+    cells_.reset(new cellLinkedList(lo, hi, radius, domain_.periodic()));
     if (radius > cells_->maxRadius())
     {
         FatalErrorInFunction
@@ -120,15 +149,7 @@ Foam::SPH::usawWalls::usawWalls
     const label vertexStart
 )
 :
-    usawWalls
-    (
-        walls,
-        W,
-        vertexStart,
-        vector2D::zero,
-        vector2D::zero,
-        FixedList<bool, 2>(false)
-    )
+    usawWalls(walls, W, vertexStart, walls.domain())
 {}
 
 
@@ -142,13 +163,23 @@ Foam::SPH::usawWalls::usawWalls
     const FixedList<bool, 2>& periodic
 )
 :
+    usawWalls(walls, W, vertexStart, SPH::domain(boxMin, boxMax, periodic))
+{}
+
+
+Foam::SPH::usawWalls::usawWalls
+(
+    const wallMesh& walls,
+    const kernel& W,
+    const label vertexStart,
+    const SPH::domain& dom
+)
+:
     walls_(walls),
     integrals_(wendlandH(W)),
     support_(W.support()),
     vertexStart_(vertexStart),
-    boxMin_(boxMin),
-    boxMax_(boxMax),
-    periodic_(periodic),
+    domain_(dom),
     maxHalfLength_(0),
     offsets_(1, 0)
 {
@@ -158,6 +189,7 @@ Foam::SPH::usawWalls::usawWalls
             << "Index of the first vertex particle " << vertexStart
             << ": expected >= 0" << exit(FatalError);
     }
+    checkDomain();
     setGeometry(walls_.points());
 }
 

@@ -58,7 +58,7 @@ Foam::label Foam::SPH::wallMesh::endPoint
         if
         (
             (segmentIn_[i] < 0 || segmentOut_[i] < 0)
-         && mag(points_[i] - p) < tol
+         && mag(domain_.separation(points_[i], p)) < tol
         )
         {
             return i;
@@ -98,6 +98,14 @@ void Foam::SPH::wallMesh::addChain
     if (!chain.closed)
     {
         pts.append(knots.last());
+    }
+
+    // In a periodic direction every vertex lies in [min, max): an end on
+    // the seam at max becomes its image at min, where it meets the chain
+    // continuing on the other side
+    for (vector2D& p : pts)
+    {
+        p = domain_.wrap(p);
     }
 
     // Vertices: the ends of open chains may join other chains
@@ -148,7 +156,7 @@ void Foam::SPH::wallMesh::calcGeometry()
     segmentNormals_.setSize(segments_.size());
     forAll(segments_, s)
     {
-        const vector2D t = points_[segments_[s].second()] - points_[segments_[s].first()];
+        const vector2D t = segmentVector(s);
         segmentNormals_[s] = leftNormal(t/mag(t));
     }
 
@@ -193,9 +201,32 @@ Foam::SPH::wallMesh::wallMesh
     const scalar dr
 )
 :
-    patchNames_(patchNames)
+    wallMesh
+    (
+        patchNames,
+        patchChains,
+        dr,
+        SPH::domain(vector2D::zero, vector2D::zero)
+    )
 {
-    DynamicList<vector2D> dummyPts;
+    // Not periodic: the box is the walls' own
+    vector2D lo, hi;
+    bounds(lo, hi);
+    domain_ = SPH::domain(lo, hi);
+}
+
+
+Foam::SPH::wallMesh::wallMesh
+(
+    const wordList& patchNames,
+    const List<List<wallChain>>& patchChains,
+    const scalar dr,
+    const SPH::domain& dom
+)
+:
+    patchNames_(patchNames),
+    domain_(dom)
+{
     forAll(patchChains, patchi)
     {
         for (const wallChain& c : patchChains[patchi])
@@ -203,17 +234,21 @@ Foam::SPH::wallMesh::wallMesh
             addChain(c, patchi, dr);
         }
     }
-    if (segments_.empty())
+    // Only a domain periodic in x and y can do without walls (a
+    // Taylor-Green vortex)
+    if (segments_.empty() && !(domain_.periodic(0) && domain_.periodic(1)))
     {
         FatalErrorInFunction
-            << "No wall segments: at least one wall patch is needed"
-            << exit(FatalError);
+            << "No wall segments: at least one wall patch is needed, unless"
+            << " the domain is periodic in x and y" << exit(FatalError);
     }
     calcGeometry();
 }
 
 
 Foam::SPH::wallMesh::wallMesh(const objectRegistry& db)
+:
+    domain_(vector2D::zero, vector2D::zero)
 {
     const word inst = db.time().constant();
     auto io = [&](const word& name)
@@ -243,15 +278,52 @@ Foam::SPH::wallMesh::wallMesh(const objectRegistry& db)
         segmentOut_[e.first()] = s;
         segmentIn_[e.second()] = s;
     }
+
+    vector2D lo, hi;
+    bounds(lo, hi);
+    domain_ = SPH::domain(db, lo, hi);
     calcGeometry();
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::SPH::wallMesh::chainBounds
+(
+    const List<List<wallChain>>& patchChains,
+    vector2D& lo,
+    vector2D& hi
+)
+{
+    lo = vector2D(GREAT, GREAT);
+    hi = vector2D(-GREAT, -GREAT);
+    for (const List<wallChain>& chains : patchChains)
+    {
+        for (const wallChain& c : chains)
+        {
+            for (const vector2D& p : c.points)
+            {
+                lo = min(lo, p);
+                hi = max(hi, p);
+            }
+        }
+    }
+}
+
+
 Foam::scalar Foam::SPH::wallMesh::segmentLength(label s) const
 {
-    return mag(points_[segments_[s].second()] - points_[segments_[s].first()]);
+    return mag(segmentVector(s));
+}
+
+
+Foam::vector2D Foam::SPH::wallMesh::segmentVector(label s) const
+{
+    return domain_.separation
+    (
+        points_[segments_[s].second()],
+        points_[segments_[s].first()]
+    );
 }
 
 
@@ -261,9 +333,9 @@ Foam::scalar Foam::SPH::wallMesh::signedDistance(const vector2D& p) const
     scalar sign = 1;
     forAll(segments_, s)
     {
-        const vector2D& a = points_[segments_[s].first()];
-        const vector2D& b = points_[segments_[s].second()];
-        const vector2D ab = b - a;
+        // The image of the segment nearest p
+        const vector2D a(domain_.image(points_[segments_[s].first()], p));
+        const vector2D ab(segmentVector(s));
         const scalar t = min(max(((p - a) & ab)/magSqr(ab), 0.0), 1.0);
         const vector2D d = p - (a + t*ab);
         const scalar dist = mag(d);
@@ -348,6 +420,17 @@ bool Foam::SPH::wallMesh::offsetChain
     };
     const label nSeg = chain.size() - 1;
 
+    // The chain unwrapped: each vertex the image nearest its predecessor
+    // (the vertices themselves when nothing is periodic). A closed chain
+    // through a periodic seam ends one period away from its start
+    List<vector2D> u(chain.size());
+    u[0] = points_[chain[0]];
+    for (label i = 1; i < chain.size(); ++i)
+    {
+        u[i] = domain_.image(points_[chain[i]], u[i - 1]);
+    }
+    const vector2D closingShift(closed ? u[nSeg] - u[0] : vector2D::zero);
+
     // Corners only: where the direction changes (and the ends)
     DynamicList<label> knots;    // index in chain
     for (label i = 0; i < nSeg; ++i)
@@ -363,9 +446,23 @@ bool Foam::SPH::wallMesh::offsetChain
     {
         knots.append(nSeg);
     }
+
+    // A closed chain without corners is a straight wall through a periodic
+    // seam: its one edge runs from the middle of its first segment once
+    // round the period, so that its dummies sit opposite the segments'
+    // midpoints, where the fluid lattice's columns are
     if (knots.empty())
     {
-        knots.append(0);   // a closed chain without corners cannot happen
+        const vector2D start(0.5*(u[0] + u[1]) + d*outNormal(0));
+        const vector2D& L = closingShift;
+        const label n = max(label(1), label(std::round(mag(L)/dr)));
+        const label patchi = segmentPatch_[segmentOut_[chain[0]]];
+        for (label j = 0; j < n; ++j)
+        {
+            pts.append(start + L*(scalar(j)/n));
+            patch.append(patchi);
+        }
+        return mag(L) > 0;
     }
 
     // Mitred offset of each corner
@@ -390,7 +487,7 @@ bool Foam::SPH::wallMesh::offsetChain
         {
             m = -segmentNormals_[hasIn ? sIn : sOut];
         }
-        offset[k] = points_[v] + d*m;
+        offset[k] = u[i] + d*m;
     }
 
     // Split every offset edge into pieces of about dr. A reversed edge has
@@ -402,10 +499,11 @@ bool Foam::SPH::wallMesh::offsetChain
     for (label e = 0; e < nEdges; ++e)
     {
         const label k1 = (e + 1) % knots.size();
+        const bool closing = closed && k1 == 0;
         const vector2D a = offset[e];
-        const vector2D b = offset[k1];
-        const vector2D orig =
-            points_[chain[closed && k1 == 0 ? nSeg : knots[k1]]] - points_[chain[knots[e]]];
+        const vector2D b =
+            (closing && domain_.anyPeriodic()) ? offset[k1] + closingShift : offset[k1];
+        const vector2D orig = u[closing ? nSeg : knots[k1]] - u[knots[e]];
         if (((b - a) & orig) <= 0)
         {
             continue;
@@ -452,9 +550,42 @@ void Foam::SPH::wallMesh::dummyLayers
         }
     }
 
+    // Offsets of a chain through a periodic seam run past it: back into
+    // the box
+    for (vector2D& p : pts)
+    {
+        p = domain_.wrap(p);
+    }
+
     // Keep a dummy unless it lies on the fluid side of some wall or within
-    // dr/2 of one already kept (where chains meet or overlap)
+    // dr/2 of one already kept (where chains meet or overlap). The grid's
+    // cells are dr/2; in a periodic direction they tile the period (a
+    // whole number of cells, each at least dr/2) and the neighbour cells
+    // wrap, so a dummy just across the seam is seen too
     const scalar cell = 0.5*dr;
+    FixedList<int64_t, 2> nPeriod(int64_t(0));
+    vector2D periodCell(cell, cell);
+    for (direction k = 0; k < 2; ++k)
+    {
+        if (domain_.periodic(k))
+        {
+            nPeriod[k] = max(int64_t(1), int64_t(std::floor(domain_.period()[k]/cell)));
+            periodCell[k] = domain_.period()[k]/nPeriod[k];
+        }
+    }
+    auto cellCoord = [&](const vector2D& p, const direction k) -> int64_t
+    {
+        if (!nPeriod[k])
+        {
+            return std::floor(p[k]/cell);
+        }
+        const int64_t c = std::floor((p[k] - domain_.min()[k])/periodCell[k]);
+        return min(max(c, int64_t(0)), nPeriod[k] - 1);
+    };
+    auto wrapCoord = [&](const int64_t c, const direction k) -> int64_t
+    {
+        return nPeriod[k] ? (c + nPeriod[k]) % nPeriod[k] : c;
+    };
     std::unordered_map<int64_t, DynamicList<label>> grid;
     auto key = [](int64_t i, int64_t j) { return (i << 32) ^ (j & 0xffffffff); };
 
@@ -466,18 +597,18 @@ void Foam::SPH::wallMesh::dummyLayers
         {
             continue;
         }
-        const int64_t ci = std::floor(p.x()/cell);
-        const int64_t cj = std::floor(p.y()/cell);
+        const int64_t ci = cellCoord(p, 0);
+        const int64_t cj = cellCoord(p, 1);
         bool clash = false;
         for (int64_t di = -1; di <= 1 && !clash; ++di)
         {
             for (int64_t dj = -1; dj <= 1 && !clash; ++dj)
             {
-                auto it = grid.find(key(ci + di, cj + dj));
+                auto it = grid.find(key(wrapCoord(ci + di, 0), wrapCoord(cj + dj, 1)));
                 if (it == grid.end()) continue;
                 for (const label j : it->second)
                 {
-                    if (mag(pts[j] - p) < 0.5*dr - 1e-9*dr)
+                    if (mag(domain_.separation(pts[j], p)) < 0.5*dr - 1e-9*dr)
                     {
                         clash = true;
                         break;
@@ -495,6 +626,52 @@ void Foam::SPH::wallMesh::dummyLayers
     positions = UIndirectList<vector2D>(pts, keep);
     layer = UIndirectList<label>(lay, keep);
     patch = UIndirectList<label>(pat, keep);
+}
+
+
+Foam::labelList Foam::SPH::wallMesh::unmatchedSeamEnds(const scalar tol) const
+{
+    DynamicList<label> ends;
+    forAll(points_, v)
+    {
+        if
+        (
+            (segmentIn_[v] < 0 || segmentOut_[v] < 0)
+         && domain_.onSeam(points_[v], tol)
+        )
+        {
+            ends.append(v);
+        }
+    }
+    return labelList(std::move(ends));
+}
+
+
+Foam::labelList Foam::SPH::wallMesh::seamSegments(const scalar tol) const
+{
+    DynamicList<label> along;
+    forAll(segments_, s)
+    {
+        const vector2D& a = points_[segments_[s].first()];
+        const vector2D b(a + segmentVector(s));
+        for (direction k = 0; k < 2; ++k)
+        {
+            if
+            (
+                domain_.periodic(k)
+             && mag(b[k] - a[k]) <= tol
+             && (
+                    mag(a[k] - domain_.min()[k]) <= tol
+                 || mag(a[k] - domain_.max()[k]) <= tol
+                )
+            )
+            {
+                along.append(s);
+                break;
+            }
+        }
+    }
+    return labelList(std::move(along));
 }
 
 

@@ -1,0 +1,327 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "domain.H"
+#include "IOdictionary.H"
+#include "Time.H"
+#include "error.H"
+#include "IStringStream.H"
+#include "OStringStream.H"
+
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
+
+const Foam::word Foam::SPH::domain::dictName("domain");
+
+const char* const Foam::SPH::domain::axisNames[2] = {"x", "y"};
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- constant/sphMesh/domain
+    Foam::IOobject domainIO
+    (
+        const Foam::objectRegistry& db,
+        const Foam::IOobject::readOption r
+    )
+    {
+        return Foam::IOobject
+        (
+            Foam::SPH::domain::dictName,
+            db.time().constant(),
+            "sphMesh",
+            db,
+            r,
+            Foam::IOobject::NO_WRITE,
+            false
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::domain::setPeriods()
+{
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (periodic_[d])
+        {
+            const scalar L = max_[d] - min_[d];
+            if (!(L > 0) || !std::isfinite(L))
+            {
+                FatalErrorInFunction
+                    << "Periodic in " << axisNames[d] << " from " << min_[d]
+                    << " to " << max_[d] << ": expected max > min"
+                    << exit(FatalError);
+            }
+            period_[d] = L;
+            halfPeriod_[d] = 0.5*L;
+        }
+        else
+        {
+            period_[d] = 0;
+            halfPeriod_[d] = VGREAT;
+        }
+    }
+}
+
+
+Foam::FixedList<bool, 2> Foam::SPH::domain::readDirections
+(
+    const dictionary& dict,
+    const bool allowNone
+)
+{
+    // One word (directions x;) or a list of them (directions (x y);)
+    const ITstream& is = dict.lookup("directions");
+    wordList names;
+    if (is.size() == 1 && is[0].isWord())
+    {
+        names = wordList(1, is[0].wordToken());
+    }
+    else
+    {
+        names = dict.get<wordList>("directions");
+    }
+
+    FixedList<bool, 2> periodic(false);
+    for (const word& w : names)
+    {
+        if (w == axisNames[0])
+        {
+            periodic[0] = true;
+        }
+        else if (w == axisNames[1])
+        {
+            periodic[1] = true;
+        }
+        else
+        {
+            FatalIOErrorInFunction(dict.lookup("directions"))
+                << "Unknown periodic direction '" << w << "' in entry"
+                << " 'directions'; valid directions are x and y, as"
+                << " 'directions (x);', '(y)' or '(x y)'" << nl
+                << exit(FatalIOError);
+        }
+    }
+    if (!allowNone && !periodic[0] && !periodic[1])
+    {
+        FatalIOErrorInFunction(dict.lookup("directions"))
+            << "Entry 'directions' names no direction; give x, y or (x y),"
+            << " or remove the 'periodic' entry for a case that is not"
+            << " periodic" << nl << exit(FatalIOError);
+    }
+    return periodic;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::domain::domain
+(
+    const vector2D& min,
+    const vector2D& max,
+    const FixedList<bool, 2>& periodic
+)
+:
+    min_(min),
+    max_(max),
+    periodic_(periodic),
+    period_(Zero),
+    halfPeriod_(VGREAT, VGREAT)
+{
+    setPeriods();
+}
+
+
+Foam::SPH::domain::domain
+(
+    const dictionary& dict,
+    const vector2D& wallsMin,
+    const vector2D& wallsMax
+)
+:
+    domain(wallsMin, wallsMax)
+{
+    const dictionary* pd = dict.findDict("periodic");
+    if (!pd)
+    {
+        if (dict.found("periodic"))
+        {
+            FatalIOErrorInFunction(dict.lookup("periodic"))
+                << "Entry 'periodic' must be a dictionary:" << nl
+                << "    periodic { directions (x); min (0 0); max (1 1); }"
+                << nl << exit(FatalIOError);
+        }
+        return;
+    }
+
+    periodic_ = readDirections(*pd, false);
+    const vector2D lo(pd->get<vector2D>("min"));
+    const vector2D hi(pd->get<vector2D>("max"));
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (!periodic_[d])
+        {
+            continue;
+        }
+        if (!(hi[d] > lo[d]))
+        {
+            FatalIOErrorInFunction(*pd)
+                << "Periodic in " << axisNames[d] << " from min " << lo[d]
+                << " to max " << hi[d] << ": expected max > min (the period"
+                << " is max - min)" << nl << exit(FatalIOError);
+        }
+        min_[d] = lo[d];
+        max_[d] = hi[d];
+    }
+    setPeriods();
+}
+
+
+Foam::SPH::domain::domain
+(
+    const objectRegistry& db,
+    const vector2D& wallsMin,
+    const vector2D& wallsMax
+)
+:
+    domain(wallsMin, wallsMax)
+{
+    IOobject io(domainIO(db, IOobject::MUST_READ));
+    if (!io.typeHeaderOk<IOdictionary>(true))
+    {
+        return;
+    }
+    const IOdictionary dict(io);
+    periodic_ = readDirections(dict, true);
+    min_ = dict.get<vector2D>("min");
+    max_ = dict.get<vector2D>("max");
+    setPeriods();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::SPH::domain::directionNames() const
+{
+    wordList names;
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (periodic_[d])
+        {
+            names.append(word(axisNames[d]));
+        }
+    }
+    return names;
+}
+
+
+Foam::SPH::domain Foam::SPH::domain::grown(const scalar margin) const
+{
+    domain g(*this);
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (!periodic_[d])
+        {
+            g.min_[d] -= margin;
+            g.max_[d] += margin;
+        }
+    }
+    return g;
+}
+
+
+Foam::scalar Foam::SPH::domain::gSum(const UList<scalar>& f) const
+{
+    scalar s = 0;
+    for (const scalar v : f)
+    {
+        s += v;
+    }
+    return s;
+}
+
+
+Foam::scalar Foam::SPH::domain::gMax(const UList<scalar>& f) const
+{
+    scalar m = -VGREAT;
+    for (const scalar v : f)
+    {
+        m = (v > m ? v : m);
+    }
+    return m;
+}
+
+
+Foam::scalar Foam::SPH::domain::gMin(const UList<scalar>& f) const
+{
+    scalar m = VGREAT;
+    for (const scalar v : f)
+    {
+        m = (v < m ? v : m);
+    }
+    return m;
+}
+
+
+void Foam::SPH::domain::report(Ostream& os) const
+{
+    if (!anyPeriodic())
+    {
+        os  << "Domain: not periodic, box " << min_ << " to " << max_ << nl;
+        return;
+    }
+    os  << "Domain: periodic in";
+    for (const word& w : directionNames())
+    {
+        os  << ' ' << w;
+    }
+    os  << nl;
+    for (direction d = 0; d < 2; ++d)
+    {
+        os  << "    " << axisNames[d] << ": [" << min_[d] << ", " << max_[d]
+            << (periodic_[d] ? "), period " : "], the walls' extent");
+        if (periodic_[d])
+        {
+            os  << period_[d];
+        }
+        os  << nl;
+    }
+}
+
+
+void Foam::SPH::domain::write(const objectRegistry& db) const
+{
+    IOobject io(domainIO(db, IOobject::NO_READ));
+    io.note() =
+        "box of the case and its periodic directions, written by sphMesh";
+    IOdictionary dict(io);
+
+    // As a user would type it, directions (x); not the list's 1(x)
+    OStringStream text;
+    text<< "directions (";
+    for (const word& w : directionNames())
+    {
+        text<< ' ' << w;
+    }
+    text<< " );";
+    dict.merge(dictionary(IStringStream(text.str())()));
+    dict.add("min", min_);
+    dict.add("max", max_);
+
+    // A small text file whatever the case's writeFormat
+    dict.regIOobject::writeObject
+    (
+        IOstream::ASCII,
+        IOstream::currentVersion,
+        IOstream::UNCOMPRESSED,
+        true
+    );
+}
+
+
+// ************************************************************************* //
