@@ -24,8 +24,7 @@ Foam::SPH::sphCloud::sphCloud
     const scalar dr,
     const scalar rho0,
     const vector2D& g,
-    const vector2D& boxMin,
-    const vector2D& boxMax
+    const domain& dom
 )
 :
     regIOobject
@@ -47,11 +46,57 @@ Foam::SPH::sphCloud::sphCloud
     dr_(dr),
     rho0_(rho0),
     g_(g),
-    boxMin_(boxMin),
-    boxMax_(boxMax),
-    cells_(boxMin, boxMax, W.support())
+    domain_(dom),
+    cells_(dom, W.support())
 {
     updateCells();
+}
+
+
+Foam::SPH::sphCloud::sphCloud
+(
+    const Time& runTime,
+    particles& parts,
+    const kernel& W,
+    const wallMesh& walls,
+    const label nFluid,
+    const scalar dr,
+    const scalar rho0,
+    const vector2D& g,
+    const vector2D& boxMin,
+    const vector2D& boxMax
+)
+:
+    sphCloud
+    (
+        runTime, parts, W, walls, nFluid, dr, rho0, g, domain(boxMin, boxMax)
+    )
+{}
+
+
+Foam::SPH::domain Foam::SPH::sphCloud::solverDomain
+(
+    const wallMesh& walls,
+    const scalar support
+)
+{
+    vector2D lo, hi;
+    walls.bounds(lo, hi);
+    const vector2D margin = 0.25*(hi - lo) + vector2D(1, 1)*support;
+    lo -= margin;
+    hi += margin;
+
+    // A periodic direction has no outside: its box is the period
+    const domain& wallsDomain = walls.domain();
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (wallsDomain.periodic(d))
+        {
+            lo[d] = wallsDomain.min()[d];
+            hi[d] = wallsDomain.max()[d];
+        }
+    }
+    return domain(lo, hi, wallsDomain.periodic());
 }
 
 

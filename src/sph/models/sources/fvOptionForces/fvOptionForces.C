@@ -37,15 +37,32 @@ Foam::SPH::fvOptionForces::fvOptionForces(const Time& runTime)
 Foam::vector2D Foam::SPH::fvOptionForces::acceleration
 (
     const UList<vector2D>& U,
+    const UList<scalar>& V,
     const scalar dt
 )
 {
     vector2D a(Zero);
     for (bodyForce& f : *this)
     {
-        a += f.acceleration(U, dt);
+        a += f.acceleration(U, V, dt);
     }
     return a;
+}
+
+
+Foam::vector2D Foam::SPH::fvOptionForces::acceleration
+(
+    const UList<vector2D>& U,
+    const scalar dt
+)
+{
+    return acceleration(U, scalarList(U.size(), 1.0), dt);
+}
+
+
+void Foam::SPH::fvOptionForces::checkDomain(const domain& dom) const
+{
+    for (const bodyForce& f : *this) f.checkDomain(dom);
 }
 
 

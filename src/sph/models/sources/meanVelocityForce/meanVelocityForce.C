@@ -90,16 +90,18 @@ Foam::SPH::meanVelocityForce::meanVelocityForce
 Foam::vector2D Foam::SPH::meanVelocityForce::acceleration
 (
     const UList<vector2D>& U,
+    const UList<scalar>& V,
     const scalar dt
 )
 {
-    // Eq. (68) over every fluid particle (selectionMode all)
-    scalar sum = 0;
+    // Eq. (68), the volume-weighted mean (selectionMode all)
+    scalar sum = 0, volume = 0;
     forAll(U, i)
     {
-        sum += U[i] & flowDir_;
+        sum += V[i]*(U[i] & flowDir_);
+        volume += V[i];
     }
-    mean_ = U.size() ? sum/U.size() : 0;
+    mean_ = volume > 0 ? sum/volume : 0;
 
     // Eq. (67); the first step has no v^{n-2}: it takes v^{n-1}
     const scalar before = lastMean_ > -VGREAT ? lastMean_ : mean_;
@@ -136,6 +138,24 @@ void Foam::SPH::meanVelocityForce::printStep(Ostream& os) const
 {
     os  << "Pressure gradient source: uncorrected Ubar = " << mean_
         << ", pressure gradient = " << gradient_ << nl;
+}
+
+
+void Foam::SPH::meanVelocityForce::checkDomain(const domain& dom) const
+{
+    for (direction d = 0; d < 2; ++d)
+    {
+        if (!dom.periodic(d) && mag(flowDir_[d]) > SMALL)
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "fvOption " << name_ << ": Ubar " << Ubar_*flowDir_
+                << " has a component along " << domain::axisNames[d]
+                << ", which is not periodic (periodic directions "
+                << dom.directionNames() << " in the periodic entry of"
+                << " system/sphMeshDict): a mean velocity can only be"
+                << " held along a period" << exit(FatalIOError);
+        }
+    }
 }
 
 

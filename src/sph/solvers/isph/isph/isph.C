@@ -8,7 +8,7 @@
 #include "OSspecific.H"
 #include "vtkParticleFile.H"
 #include "vtkWallFile.H"
-#include "fieldDictionary.H"
+#include "initialField.H"
 #include "mathematicalConstants.H"
 #include "drift.H"
 #include "moveWalls.H"
@@ -58,61 +58,21 @@ namespace
 
 void Foam::SPH::isph::readInitialVelocity()
 {
-    const fieldDictionary Udict
-    (
-        IOobject
-        (
-            "U", runTime_.timeName(), runTime_,
-            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
-        )
-    );
-    vector2DField& U = parts_.field<vector2D>("U");
-    if (!Udict.found("internalField"))
+    const initialField U0(runTime_, "U");
+    SubList<vector2D> U(parts_.field<vector2D>("U"), nFluid_);
+    if (!U0.found())
     {
         Info<< "No " << runTime_.timeName()/"U"
             << ": the fluid starts at rest" << nl;
-        for (label i = 0; i < nFluid_; ++i)
-        {
-            U[i] = vector2D::zero;
-        }
-        return;
+        U = vector2D::zero;
     }
-
-    // As a finite-volume field: uniform, or one value per fluid particle
-    // in the order of constant/sphMesh/fluid (what sphMapFields writes)
-    ITstream& is = Udict.lookup("internalField");
-    const word kind(is);
-    if (kind == "uniform")
+    else if (U0.read(U))
     {
-        const vector v(is);
-        for (label i = 0; i < nFluid_; ++i)
-        {
-            U[i] = vector2D(v.x(), v.y());
-        }
-        Info<< "Initial velocity " << U[0] << " from " << Udict.objectPath() << nl;
-    }
-    else if (kind == "nonuniform")
-    {
-        const vectorField values(is);
-        if (values.size() != nFluid_)
-        {
-            FatalIOErrorInFunction(is)
-                << "internalField nonuniform holds " << values.size()
-                << " vectors: expected one per fluid particle of"
-                << " constant/sphMesh/fluid, " << nFluid_ << exit(FatalIOError);
-        }
-        forAll(values, i)
-        {
-            U[i] = vector2D(values[i].x(), values[i].y());
-        }
-        Info<< "Initial velocity per particle from " << Udict.objectPath() << nl;
+        Info<< "Initial velocity " << U[0] << " from " << U0.path() << nl;
     }
     else
     {
-        FatalIOErrorInFunction(is)
-            << "Expected 'internalField uniform (Ux Uy Uz);' or"
-            << " 'internalField nonuniform List<vector> N (...);', found "
-            << kind << exit(FatalIOError);
+        Info<< "Initial velocity per particle from " << U0.path() << nl;
     }
 }
 
@@ -199,22 +159,15 @@ void Foam::SPH::isph::buildCloud()
     const fluidProperties fluid(runTime_);
     initialise(fluid.rho0);
 
-    // The domain: the walls' box with a margin; leaving it is an error
-    vector2D boxMin, boxMax;
-    walls_->bounds(boxMin, boxMax);
-    const vector2D margin =
-        0.25*(boxMax - boxMin) + vector2D(1, 1)*kernel_->support();
-    boxMin -= margin;
-    boxMax += margin;
-
     cloud_.reset
     (
         new sphCloud
         (
             runTime_, parts_, *kernel_, *walls_, nFluid_, dr_, fluid.rho0,
-            fluid.g, boxMin, boxMax
+            fluid.g, sphCloud::solverDomain(*walls_, kernel_->support())
         )
     );
+    forces_.checkDomain(cloud_->dom());
     usaw_.reset(new usawWalls(*walls_, *kernel_, nFluid_));
     if (!motion_->movesGeometry())
     {
@@ -301,11 +254,14 @@ void Foam::SPH::isph::addStages()
     // 000_... section 3.2, eqs. (30)-(38)
     isphWork& w = *work_;
     const bool moving = motion_->any();
-    stages_.add(new drift(parts_, nFluid_, 0.5, "eq. (30)"));
+    stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (30)"));
     if (moving) stages_.add(new moveWalls(w, runTime_, false));
     stages_.add(new usawNeighbours(w, ""));
     stages_.add(new viscousPrediction(w));
-    if (!forces_.empty()) stages_.add(new bodyForces(w, forces_));
+    if (!forces_.empty() || w.gPeriodic != vector2D::zero)
+    {
+        stages_.add(new bodyForces(w, forces_));
+    }
     if (renormalised) stages_.add(new renormalisation(w));
     if (freeSurface_) stages_.add(new freeSurface(w, divRMax));
     pressure_ = &stages_.add
@@ -313,7 +269,7 @@ void Foam::SPH::isph::addStages()
         new pressurePoisson(w, runTime_, solution_, renormalised, freeSurface_)
     );
     stages_.add(new projection(w, renormalised));
-    stages_.add(new drift(parts_, nFluid_, 0.5, "eq. (34)"));
+    stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (34)"));
     if (moving) stages_.add(new moveWalls(w, runTime_, true));
     if (shift)
     {
@@ -409,7 +365,7 @@ Foam::scalar Foam::SPH::isph::maxDeltaT() const
 {
     const scalar h = kernel_->h();
     const scalar nu = work_->nu;
-    const vector2D& g = work_->g;
+    const vector2D g = work_->g + work_->gPeriodic;
 
     // u_ref: the fastest particle, fluid or wall (000_... after eq. (50))
     const vector2DField& U = parts_.field<vector2D>("U");

@@ -14,7 +14,7 @@
 #include "vtkParticleFile.H"
 #include "vtkWallFile.H"
 #include "wallConditions.H"
-#include "fieldDictionary.H"
+#include "initialField.H"
 
 #include <cmath>
 #include <chrono>
@@ -164,110 +164,90 @@ void Foam::SPH::wcsph::initialiseFromSphMesh()
 }
 
 
+void Foam::SPH::wcsph::hydrostaticPressure(ITstream& is)
+{
+    const scalar gMag = mag(g_);
+    if (mag(g_.x()) > SMALL*gMag)
+    {
+        FatalIOErrorInFunction(is)
+            << "internalField hydrostatic needs gravity along -y"
+            << exit(FatalIOError);
+    }
+
+    // The top of each lattice column of water is its free surface
+    HashTable<scalar, label, Hash<label>> top;
+    const vector2DField& x = parts_.positions();
+    for (label i = 0; i < nFluid_; ++i)
+    {
+        const label col = std::lround(x[i].x()/dr_);
+        auto it = top.find(col);
+        if (!it.found()) top.set(col, x[i].y());
+        else *it = max(*it, x[i].y());
+    }
+    scalarField& p = parts_.field<scalar>("p");
+    for (label i = 0; i < nFluid_; ++i)
+    {
+        const scalar surface = top[std::lround(x[i].x()/dr_)] + 0.5*dr_;
+        p[i] = rho0_*gMag*(surface - x[i].y());
+    }
+}
+
+
 void Foam::SPH::wcsph::setInitialFields()
 {
     const word t0(runTime_.timeName());
-    auto initialDict = [&](const word& name)
-    {
-        return fieldDictionary
-        (
-            IOobject
-            (
-                name, t0, runTime_,
-                IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
-            )
-        );
-    };
+    SubList<vector2D> U(parts_.field<vector2D>("U"), nFluid_);
+    SubList<scalar> p(parts_.field<scalar>("p"), nFluid_);
+    U = vector2D::zero;
+    p = 0;
 
-    vector2DField& U = parts_.field<vector2D>("U");
-    scalarField& p = parts_.field<scalar>("p");
-    scalarField& rho = parts_.field<scalar>("rho");
-
-    const fieldDictionary Udict(initialDict("U"));
-    vector2D U0(vector2D::zero);
-    if (Udict.found("internalField"))
-    {
-        ITstream& is = Udict.lookup("internalField");
-        const word kind(is);
-        if (kind != "uniform")
-        {
-            FatalIOErrorInFunction(is)
-                << "Expected 'internalField uniform (Ux Uy Uz);'"
-                << exit(FatalIOError);
-        }
-        const vector v(is);
-        U0 = vector2D(v.x(), v.y());
-        Info<< "Initial velocity " << U0 << " from " << Udict.objectPath() << nl;
-    }
-    else
+    const initialField U0(runTime_, "U");
+    if (!U0.found())
     {
         Info<< "No " << t0/"U" << ": the fluid starts at rest" << nl;
     }
-
-    const fieldDictionary pDict(initialDict("p"));
-    const scalar gMag = mag(g_);
-    for (label i = 0; i < nFluid_; ++i)
+    else if (U0.read(U))
     {
-        U[i] = U0;
-        p[i] = 0;
-    }
-    if (pDict.found("internalField"))
-    {
-        ITstream& is = pDict.lookup("internalField");
-        const word kind(is);
-        if (kind == "uniform")
-        {
-            const scalar pu = readScalar(is);
-            for (label i = 0; i < nFluid_; ++i) p[i] = pu;
-            Info<< "Initial pressure " << pu << " from " << pDict.objectPath() << nl;
-        }
-        else if (kind == "hydrostatic")
-        {
-            if (mag(g_.x()) > SMALL*gMag)
-            {
-                FatalIOErrorInFunction(is)
-                    << "internalField hydrostatic needs gravity along -y"
-                    << exit(FatalIOError);
-            }
-            // The top of each lattice column of water is its free surface
-            HashTable<scalar, label, Hash<label>> top;
-            const vector2DField& x = parts_.positions();
-            for (label i = 0; i < nFluid_; ++i)
-            {
-                const label col = std::lround(x[i].x()/dr_);
-                auto it = top.find(col);
-                if (!it.found()) top.set(col, x[i].y());
-                else *it = max(*it, x[i].y());
-            }
-            for (label i = 0; i < nFluid_; ++i)
-            {
-                const scalar surface = top[std::lround(x[i].x()/dr_)] + 0.5*dr_;
-                p[i] = rho0_*gMag*(surface - x[i].y());
-            }
-            Info<< "Initial pressure hydrostatic (rho0 |g| depth below the top"
-                << " of each water column) from " << pDict.objectPath() << nl;
-        }
-        else
-        {
-            FatalIOErrorInFunction(is)
-                << "Expected 'internalField uniform <p>;' or"
-                << " 'internalField hydrostatic;', found " << kind
-                << exit(FatalIOError);
-        }
+        Info<< "Initial velocity " << U[0] << " from " << U0.path() << nl;
     }
     else
     {
+        Info<< "Initial velocity per particle from " << U0.path() << nl;
+    }
+
+    const initialField p0(runTime_, "p");
+    if (!p0.found())
+    {
         Info<< "No " << t0/"p" << ": the fluid starts at p = 0" << nl;
     }
+    else if (p0.kind() == "hydrostatic")
+    {
+        hydrostaticPressure(p0.stream());
+        Info<< "Initial pressure hydrostatic (rho0 |g| depth below the top"
+            << " of each water column) from " << p0.path() << nl;
+    }
+    else if (p0.read(p, " or 'internalField hydrostatic;'"))
+    {
+        Info<< "Initial pressure " << p[0] << " from " << p0.path() << nl;
+    }
+    else
+    {
+        Info<< "Initial pressure per particle from " << p0.path() << nl;
+    }
+
+    // Density from the equation of state; walls at rest at rho0
+    vector2DField& Uall = parts_.field<vector2D>("U");
+    scalarField& pAll = parts_.field<scalar>("p");
+    scalarField& rho = parts_.field<scalar>("rho");
     for (label i = 0; i < nFluid_; ++i)
     {
-        rho[i] = density(p[i]);
+        rho[i] = density(pAll[i]);
     }
     for (label i = nFluid_; i < parts_.size(); ++i)
     {
-        U[i] = vector2D::zero;
+        Uall[i] = vector2D::zero;
         rho[i] = rho0_;
-        p[i] = 0;
+        pAll[i] = 0;
     }
 }
 
@@ -370,18 +350,12 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     skin_ = skinByH_*kernel_->h();
     initialise();
 
-    // The domain: the walls' box and a margin for splashes
-    walls_->bounds(boxMin_, boxMax_);
-    const vector2D margin = 0.25*(boxMax_ - boxMin_) + vector2D(1, 1)*kernel_->support();
-    boxMin_ -= margin;
-    boxMax_ += margin;
-
     cloud_.reset
     (
         new sphCloud
         (
             runTime, parts_, *kernel_, *walls_, nFluid_, dr_, rho0_, g_,
-            boxMin_, boxMax_
+            sphCloud::solverDomain(*walls_, kernel_->support())
         )
     );
 
@@ -579,6 +553,17 @@ void Foam::SPH::wcsph::rungeKutta4(const scalar dt)
             std::chrono::steady_clock::now() - start
         ).count();
     }
+
+    // The stages may stray across a periodic seam (the cell list and the
+    // pair separations take the minimum image); the step ends inside
+    const domain& dom = cloud_->dom();
+    if (dom.anyPeriodic())
+    {
+        for (label i = 0; i < nF; ++i)
+        {
+            x[i] = dom.wrap(x[i]);
+        }
+    }
     ratesCurrent_ = false;
 }
 
@@ -619,7 +604,6 @@ void Foam::SPH::wcsph::afterStep(const scalar dt)
 
 void Foam::SPH::wcsph::write() const
 {
-    const vector2DField& x = parts_.positions();
     if (!vtk_)
     {
         vtk_.reset

@@ -19,13 +19,13 @@ void Foam::SPH::wcsph::dummyPressure(const Kernel& W)
 {
     // 004_... eq. (10): a Shepard average over the fluid neighbours of the
     // fluid pressure plus the hydrostatic step to the dummy particle
-    const vector2D* x = parts_.positions().cdata();
     const scalar* rho = parts_.field<scalar>("rho").cdata();
     scalar* p = parts_.field<scalar>("p").data();
     scalar* rhoW = parts_.field<scalar>("rho").data();
 
     const label* off = nbrs_.offsets().cdata();
     const label* nbr = nbrs_.indices().cdata();
+    const vector2D* rij = nbrs_.rij().cdata();
     const scalar* r = nbrs_.r().cdata();
     const label nF = nFluid_;
     const label n = parts_.size();
@@ -40,7 +40,8 @@ void Foam::SPH::wcsph::dummyPressure(const Kernel& W)
             const label a = nbr[k];
             if (a >= nF) continue;
             const scalar VW = m/rho[a]*W.W(r[k]);
-            sumPW += (p[a] + rho[a]*(g_ & (x[s] - x[a])))*VW;
+            // rij = x_s - x_a, its minimum image across a periodic seam
+            sumPW += (p[a] + rho[a]*(g_ & rij[k]))*VW;
             sumW += VW;
         }
         p[s] = sumW > 0 ? sumPW/sumW : 0;
@@ -178,11 +179,13 @@ void Foam::SPH::wcsph::updateNeighbours()
     const vector2DField& x = parts_.positions();
 
     // Walls do not move: the fluid particles alone decide
+    const domain& dom = cloud_->dom();
     bool valid = listBuilt_;
     const scalar maxMove2 = sqr(0.5*skin_);
     for (label i = 0; i < nFluid_ && valid; ++i)
     {
-        valid = magSqr(x[i] - positionsAtBuild_[i]) <= maxMove2;
+        valid =
+            magSqr(dom.separation(x[i], positionsAtBuild_[i])) <= maxMove2;
     }
 
     if (valid)

@@ -33,6 +33,15 @@ void Foam::SPH::shifting::execute(const scalar dt)
         maxShift2 = max(maxShift2, magSqr(delta));
     }
     maxShift_ = std::sqrt(maxShift2);
+
+    const domain& dom = w.cloud.dom();
+    if (dom.anyPeriodic())
+    {
+        for (label i = 0; i < w.nFluid; ++i)
+        {
+            x[i] = dom.wrap(x[i]);
+        }
+    }
 }
 
 

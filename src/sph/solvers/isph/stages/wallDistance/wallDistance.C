@@ -18,6 +18,7 @@ void Foam::SPH::wallDistance::execute(const scalar dt)
     vector2D* U = work_.parts.field<vector2D>("U").data();
     const scalar dMin = dMin_;
     const label nFluid = work_.nFluid;
+    const domain& dom = work_.cloud.dom();
 
     label nHeld = 0;
     #pragma omp parallel for schedule(static) reduction(+:nHeld)
@@ -28,11 +29,17 @@ void Foam::SPH::wallDistance::execute(const scalar dt)
         {
             const label s = seg[k];
             const vector2D& n = normal[s];
+            // Minimum images: a segment may lie across a periodic seam
             const vector2D& a = x[ends[s].first()];
-            const vector2D e(x[ends[s].second()] - a);
-            const scalar t = ((x[i] - a) & e)/magSqr(e);
-            const scalar d = (x[i] - a) & n;
-            if (t <= 0 || t >= 1 || d >= dMin || ((x0[i] - a) & n) < 0)
+            const vector2D e(dom.separation(x[ends[s].second()], a));
+            const vector2D xa(dom.separation(x[i], a));
+            const scalar t = (xa & e)/magSqr(e);
+            const scalar d = xa & n;
+            if
+            (
+                t <= 0 || t >= 1 || d >= dMin
+             || (dom.separation(x0[i], a) & n) < 0
+            )
             {
                 continue;
             }
@@ -47,6 +54,10 @@ void Foam::SPH::wallDistance::execute(const scalar dt)
                 U[i] -= un*n;
             }
             held = true;
+        }
+        if (held)
+        {
+            x[i] = dom.wrap(x[i]);
         }
         nHeld += held;
     }

@@ -1,0 +1,135 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "initialField.H"
+#include "Time.H"
+#include "vectorField.H"
+#include "scalarField.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::initialField::badKind
+(
+    ITstream& is,
+    const word& kind,
+    const word& listType,
+    const string& expected
+) const
+{
+    FatalIOErrorInFunction(is)
+        << "internalField " << kind << ": expected 'internalField uniform"
+        << " <value>;', 'internalField nonuniform List<" << listType
+        << "> N (...);' (one value per fluid particle of"
+        << " constant/sphMesh/fluid)" << expected.c_str()
+        << exit(FatalIOError);
+    ::abort();
+}
+
+
+void Foam::SPH::initialField::badSize
+(
+    ITstream& is,
+    const label size,
+    const label expected
+) const
+{
+    FatalIOErrorInFunction(is)
+        << "internalField nonuniform holds " << size << " values: expected"
+        << " one per fluid particle of constant/sphMesh/fluid, " << expected
+        << exit(FatalIOError);
+    ::abort();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::initialField::initialField(const Time& runTime, const word& name)
+:
+    dict_
+    (
+        IOobject
+        (
+            name, runTime.timeName(), runTime,
+            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+        )
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::SPH::initialField::found() const
+{
+    return dict_.found("internalField");
+}
+
+
+Foam::word Foam::SPH::initialField::kind() const
+{
+    return word(stream());
+}
+
+
+bool Foam::SPH::initialField::read
+(
+    UList<vector2D>& values,
+    const string& expected
+) const
+{
+    ITstream& is = stream();
+    const word kind(is);
+    if (kind == "uniform")
+    {
+        const vector v(is);
+        values = vector2D(v.x(), v.y());
+        return true;
+    }
+    if (kind != "nonuniform")
+    {
+        badKind(is, kind, "vector", expected);
+    }
+    const vectorField list(is);
+    if (list.size() != values.size())
+    {
+        badSize(is, list.size(), values.size());
+    }
+    forAll(list, i)
+    {
+        values[i] = vector2D(list[i].x(), list[i].y());
+    }
+    return false;
+}
+
+
+bool Foam::SPH::initialField::read
+(
+    UList<scalar>& values,
+    const string& expected
+) const
+{
+    ITstream& is = stream();
+    const word kind(is);
+    if (kind == "uniform")
+    {
+        values = readScalar(is);
+        return true;
+    }
+    if (kind != "nonuniform")
+    {
+        badKind(is, kind, "scalar", expected);
+    }
+    const scalarField list(is);
+    if (list.size() != values.size())
+    {
+        badSize(is, list.size(), values.size());
+    }
+    forAll(list, i)
+    {
+        values[i] = list[i];
+    }
+    return false;
+}
+
+
+// ************************************************************************* //
