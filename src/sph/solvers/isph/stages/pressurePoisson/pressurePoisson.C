@@ -6,37 +6,6 @@
 #include "usawOperators.H"
 #include "kernelDispatch.H"
 
-#include <algorithm>
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-    enum rowKind : Foam::label
-    {
-        equation = 0, dirichlet = 1, extension = 2, copy = 3
-    };
-
-    //- Eigen's compressed rows hold each column once, in ascending order
-    void compress(std::vector<std::pair<int, Foam::scalar>>& row)
-    {
-        std::sort(row.begin(), row.end());
-        std::size_t last = 0;
-        for (std::size_t k = 1; k < row.size(); ++k)
-        {
-            if (row[k].first == row[last].first)
-            {
-                row[last].second += row[k].second;
-            }
-            else
-            {
-                row[++last] = row[k];
-            }
-        }
-        row.resize(last + 1);
-    }
-}
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class Kernel>
@@ -48,7 +17,11 @@ void Foam::SPH::pressurePoisson::classifyRows(const Kernel& K)
     const label* nbr = work_.nbrs.indices().cdata();
     const scalar* r = work_.nbrs.r().cdata();
     const label* surface = work_.surface.cdata();
-    label* kind = rowKind_.data();
+    label* kind = laplacian_.kinds().data();
+    const label equation = laplacianMatrix::interior;
+    const label dirichlet = laplacianMatrix::dirichlet;
+    const label extension = laplacianMatrix::extension;
+    const label copy = laplacianMatrix::copy;
 
 
     // Kind of each row: a fluid particle at the free surface, or one no
@@ -59,7 +32,7 @@ void Foam::SPH::pressurePoisson::classifyRows(const Kernel& K)
     // fluid particle reaches (dry) matters only through the segments it
     // shares with reached vertices, and copies the A of such a neighbour
     // along the wall (else p = 0)
-    labelList& copyFrom = copyFrom_;
+    labelList& copyFrom = laplacian_.copyFrom();
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)
     {
@@ -98,147 +71,25 @@ void Foam::SPH::pressurePoisson::classifyRows(const Kernel& K)
 
 
 template<class Kernel>
-void Foam::SPH::pressurePoisson::assemble(const Kernel& K, const scalar dt)
+void Foam::SPH::pressurePoisson::setSources(const Kernel& K, const scalar dt)
 {
-    const label n = work_.parts.size();
-    const label nF = work_.nFluid;
-    const label* off = work_.nbrs.offsets().cdata();
-    const label* nbr = work_.nbrs.indices().cdata();
-    const vector2D* rij = work_.nbrs.rij().cdata();
-    const scalar* r = work_.nbrs.r().cdata();
-    const scalar* gamma = work_.usaw.gamma().cdata();
-    const vector2D* gradGamma = work_.usaw.gradGamma().cdata();
-    const label* wOff = work_.usaw.offsets().cdata();
-    const label* seg = work_.usaw.segments().cdata();
-    const vector2D* gradGammaAs = work_.usaw.gradGammaAs().cdata();
-    const labelPair* ends = work_.usaw.segmentParticles().cdata();
-    const vector2D* x = work_.parts.positions().cdata();
-    const scalar* V = work_.V.cdata();
-    const scalar* divU = divU_.cdata();
-    const scalar* dAdn = dAdn_.cdata();
-    const tensor2D* R = work_.R.cdata();
-    const label* kind = rowKind_.cdata();
-    const label* copyFrom = copyFrom_.cdata();
-    const bool ownGradient = ownGradient_;
-    const scalar diagFactor = freeSurface_ ? 1 : 1 + diagonalReinforcement_;
-    const scalar rho = work_.rho0;
-    const vector2D g = work_.g;
-
-
-    // Each row as (column, coefficient) pairs; a Dirichlet neighbour's
-    // term goes to the right-hand side
-    b_.resize(n);
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
+    // Eq. (42): L{A} = rho/dt D{u**}
+    isphWork& w = work_;
+    usaw::div(K, w.nbrs, w.usaw, w.V, w.Ustar, source_);
+    const scalar rho = w.rho0;
+    forAll(source_, i)
     {
-        std::vector<std::pair<int, scalar>>& row = rows_[i];
-        row.clear();
-        if (kind[i] == dirichlet)
-        {
-            row.emplace_back(i, 1);
-            b_[i] = -rho*(g & x[i]);
-            continue;
-        }
-        if (kind[i] == copy)
-        {
-            row.emplace_back(i, 1);
-            row.emplace_back(copyFrom[i], -1);
-            compress(row);
-            b_[i] = 0;
-            continue;
-        }
-
-        scalar diag = 0;
-        scalar bi = 0;
-        auto add = [&](const label j, const scalar c)
-        {
-            // c (A_i - A_j)
-            diag += c;
-            if (kind[j] == dirichlet)
-            {
-                bi -= c*rho*(g & x[j]);
-            }
-            else
-            {
-                row.emplace_back(j, -c);
-            }
-        };
-
-        const scalar invGamma = 1/gamma[i];
-        const bool sources = kind[i] == equation;
-        // The fluid particle's own normal gradient, eq. (10) as printed:
-        // (grad A)_a . grad gamma_a/gamma_a with (grad A)_a = R G-{A}, the
-        // gradient of the projection (eq. (40) doubles the wall's instead,
-        // and the projection then leaves the divergence of a particle
-        // driven towards a wall); q = R^T grad gamma_a/gamma_a
-        const bool own = sources && ownGradient && i < nF;
-        const vector2D q
-        (
-            own ? invGamma*(R[i].T() & gradGamma[i]) : vector2D::zero
-        );
-
-        // One entry per neighbour (an extension row averages over the fluid
-        // and the reached vertices)
-        for (label k = off[i]; k < off[i + 1]; ++k)
-        {
-            const label j = nbr[k];
-            if (sources || j < nF || kind[j] == equation || kind[j] == extension)
-            {
-                scalar c = -2*invGamma*V[j]*K.dWdrByR(r[k]);
-                if (own)
-                {
-                    c -= invGamma*V[j]*(K.gradW(rij[k], r[k]) & q);
-                }
-                add(j, c);
-            }
-        }
-
-        if (sources)
-        {
-            bi -= rho/dt*divU[i];
-            for (label k = wOff[i]; k < wOff[i + 1]; ++k)
-            {
-                if (own)
-                {
-                    // (A_a - A_s) grad gamma_as . q, A_s the vertices' mean
-                    const scalar f = invGamma*(gradGammaAs[k] & q);
-                    add(ends[seg[k]].first(), 0.5*f);
-                    add(ends[seg[k]].second(), 0.5*f);
-                }
-                bi -= (own ? 1 : 2)*invGamma*dAdn[seg[k]]*mag(gradGammaAs[k]);
-            }
-        }
-        row.emplace_back(i, diagFactor*diag);
-        b_[i] = bi;
-
-        compress(row);
+        source_[i] = rho/dt*source_[i];
     }
-}
 
-
-void Foam::SPH::pressurePoisson::fillMatrix()
-{
-    const label n = work_.parts.size();
-    A_.resize(n, n);
-    int* start = A_.outerIndexPtr();
-    start[0] = 0;
-    for (label i = 0; i < n; ++i)
+    // p = 0 at the free surface: A = -rho g.x, i.e. s f with s = -rho
+    // (set at construction) and f = g.x
+    scalarList& f = laplacian_.dirichletValues();
+    const vector2DField& x = w.parts.positions();
+    const vector2D g = w.g;
+    forAll(f, i)
     {
-        start[i + 1] = start[i] + rows_[i].size();
-    }
-    A_.resizeNonZeros(start[n]);
-    int* col = A_.innerIndexPtr();
-    scalar* val = A_.valuePtr();
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        int k = start[i];
-        for (const auto& entry : rows_[i])
-        {
-            col[k] = entry.first;
-            val[k] = entry.second;
-            ++k;
-        }
+        f[i] = g & x[i];
     }
 }
 
@@ -256,7 +107,8 @@ void Foam::SPH::pressurePoisson::wallCondition(const scalar dt)
     const vector2DField& U = work_.parts.field<vector2D>("U");
     const List<labelPair>& ends = work_.usaw.segmentParticles();
     const List<vector2D>& normal = work_.usaw.segmentNormals();
-    forAll(dAdn_, s)
+    scalarList& dAdn = laplacian_.wallFlux();
+    forAll(dAdn, s)
     {
         const label v1 = ends[s].first();
         const label v2 = ends[s].second();
@@ -265,7 +117,7 @@ void Foam::SPH::pressurePoisson::wallCondition(const scalar dt)
         (
             0.5*(work_.wallU[v1 - nFluid] + work_.wallU[v2 - nFluid])
         );
-        dAdn_[s] = work_.rho0*((uOld - uNew) & normal[s])/dt;
+        dAdn[s] = work_.rho0*((uOld - uNew) & normal[s])/dt;
     }
 }
 
@@ -275,19 +127,20 @@ void Foam::SPH::pressurePoisson::makeCompatible()
     const scalar* gamma = work_.usaw.gamma().cdata();
     const scalarList& V = work_.V;
     const label n = work_.parts.size();
+    vectorN& b = laplacian_.source();
     scalar sumW = 0, sumWB = 0;
     for (label i = 0; i < n; ++i)
     {
         const scalar w = V[i]*gamma[i];
         sumW += w;
-        sumWB += w*b_[i];
+        sumWB += w*b[i];
     }
     const scalar mean = sumWB/sumW;
     for (label i = 0; i < n; ++i)
     {
         if (V[i] > 0)
         {
-            b_[i] -= mean;
+            b[i] -= mean;
         }
     }
 }
@@ -344,12 +197,9 @@ Foam::SPH::pressurePoisson::pressurePoisson
     stopIfNotConverged_(true),
     diagonalReinforcement_(1e-6),
     pRefValue_(0),
-    divU_(work.parts.size()),
-    dAdn_(work.cloud.walls().segments().size(), Zero),
-    rowKind_(work.parts.size(), Zero),
-    copyFrom_(work.parts.size(), label(-1)),
+    source_(work.parts.size()),
     vertexNeighbours_(work.cloud.walls().points().size()),
-    rows_(work.parts.size()),
+    laplacian_(work.nbrs, work.usaw, work.V, work.nFluid),
     nIterations_(0)
 {
     const dictionary& controls = solution.subOrEmptyDict("ISPH");
@@ -366,6 +216,13 @@ Foam::SPH::pressurePoisson::pressurePoisson
             << ": expected >= 0" << exit(FatalIOError);
     }
     pRefValue_ = controls.getOrDefault<scalar>("pRefValue", pRefValue_);
+
+    if (ownGradient_)
+    {
+        laplacian_.ownGradient(work.R);
+    }
+    laplacian_.diagonalFactor(freeSurface_ ? 1 : 1 + diagonalReinforcement_);
+    laplacian_.dirichletScale(-work.rho0);
 
     for (const labelPair& e : work.cloud.walls().segments())
     {
@@ -405,11 +262,10 @@ void Foam::SPH::pressurePoisson::execute(const scalar dt)
     wallCondition(dt);
     dispatch(w.W, [&](const auto& K)
     {
-        usaw::div(K, w.nbrs, w.usaw, w.V, w.Ustar, divU_);
+        setSources(K, dt);
         classifyRows(K);
-        assemble(K, dt);
+        laplacian_.assemble(K, source_);
     });
-    fillMatrix();
     if (!freeSurface_)
     {
         makeCompatible();
@@ -425,7 +281,7 @@ void Foam::SPH::pressurePoisson::execute(const scalar dt)
         xA_[i] = p[i] - w.rho0*(w.g & x[i]);
     }
 
-    lastSolve_ = solver_->solve(A_, b_, xA_);
+    lastSolve_ = solver_->solve(laplacian_.matrix(), laplacian_.source(), xA_);
     nIterations_ += lastSolve_.nIterations();
     setPressure();
 
