@@ -10,6 +10,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "testCase.H"
+#include "restartCheck.H"
 #include "particles.H"
 #include "wallMesh.H"
 
@@ -150,27 +151,9 @@ TEST(wcsphFoam, hydrostaticTankStaysAtRestForTwoSeconds)
 
 TEST(wcsphFoam, restartIsExactToTheBit)
 {
+    // Every file of the T directory: the particle fields and uniform/
     const fileName once = tankCase("wcsphRestartOnce", 0.05, "0.02");
-    setEntry(once/"system"/"controlDict", "writeInterval", "0.01");
-    std::string out;
-    const fileName twice = once + "Twice";
-    rmDir(twice);
-    ASSERT_EQ(run("cp -r " + once + " " + twice, out), 0);
-
-    ASSERT_EQ(run(bin + "wcsphFoam -case " + once, out), 0) << out;
-
-    setEntry(twice/"system"/"controlDict", "endTime", "0.01");
-    ASSERT_EQ(run(bin + "wcsphFoam -case " + twice, out), 0) << out;
-    setEntry(twice/"system"/"controlDict", "endTime", "0.02");
-    setEntry(twice/"system"/"controlDict", "startFrom", "latestTime");
-    ASSERT_EQ(run(bin + "wcsphFoam -case " + twice, out), 0) << out;
-    EXPECT_NE(out.find("Restarting from"), std::string::npos) << out;
-
-    for (const word f : {"positions", "U", "rho", "p"})
-    {
-        EXPECT_EQ(run("cmp " + once/"0.02/lagrangian/sph"/f + " " + twice/"0.02/lagrangian/sph"/f, out), 0)
-            << f << ": " << out;
-    }
+    sphTest::expectExactRestart("wcsphFoam", once, "0.02", "0.01");
 }
 
 
