@@ -8,16 +8,17 @@
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::SPH::fvOptionForces::fvOptionForces(const Time& runTime)
-{
-    const IOdictionary dict
+:
+    dict_
     (
         IOobject
         (
             "fvOptions", runTime.constant(), runTime,
             IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
         )
-    );
-    for (const entry& e : dict)
+    )
+{
+    for (const entry& e : dict_)
     {
         if (!e.isDict())
         {

@@ -147,13 +147,20 @@ void Foam::SPH::meanVelocityForce::checkDomain(const domain& dom) const
     {
         if (!dom.periodic(d) && mag(flowDir_[d]) > SMALL)
         {
+            const vector2D U(Ubar_*flowDir_);
+            string periodic;
+            for (const word& w : dom.directionNames())
+            {
+                periodic += (periodic.empty() ? "" : " ") + w;
+            }
             FatalIOErrorInFunction(coeffs_)
-                << "fvOption " << name_ << ": Ubar " << Ubar_*flowDir_
-                << " has a component along " << domain::axisNames[d]
-                << ", which is not periodic (periodic directions "
-                << dom.directionNames() << " in the periodic entry of"
-                << " system/sphMeshDict): a mean velocity can only be"
-                << " held along a period" << exit(FatalIOError);
+                << "fvOption " << name_ << ": Ubar (" << U.x() << ' '
+                << U.y() << " 0) has a component along "
+                << domain::axisNames[d] << ", which is not periodic"
+                << " (periodic directions (" << periodic.c_str()
+                << ") in the periodic entry of system/sphMeshDict): a mean"
+                << " velocity can only be held along a period"
+                << exit(FatalIOError);
         }
     }
 }

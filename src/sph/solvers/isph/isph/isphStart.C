@@ -1,0 +1,159 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    The start of an isphFoam run: the particles from constant/sphMesh (or
+    the restart time), the initial velocity, the cloud and its domain, the
+    USAW walls and the particle volumes.
+
+\*---------------------------------------------------------------------------*/
+
+#include "isph.H"
+#include "fluidProperties.H"
+#include "Time.H"
+#include "OSspecific.H"
+#include "initialField.H"
+#include "mathematicalConstants.H"
+#include "moveWalls.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::isph::readInitialVelocity()
+{
+    const initialField U0(runTime_, "U");
+    SubList<vector2D> U(parts_.field<vector2D>("U"), nFluid_);
+    if (!U0.found())
+    {
+        Info<< "No " << runTime_.timeName()/"U"
+            << ": the fluid starts at rest" << nl;
+        U = vector2D::zero;
+    }
+    else if (U0.read(U))
+    {
+        Info<< "Initial velocity " << U[0] << " from " << U0.path() << nl;
+    }
+    else
+    {
+        Info<< "Initial velocity per particle from " << U0.path() << nl;
+    }
+}
+
+
+void Foam::SPH::isph::initialiseFromSphMesh()
+{
+    particles fluid(runTime_, runTime_.constant(), "sphMesh/fluid", false);
+    fluid.read();
+
+    nFluid_ = fluid.size();
+    const List<vector2D>& vertices = walls_->points();
+    parts_.resize(nFluid_ + vertices.size());
+
+    vector2DField& x = parts_.positions();
+    labelField& type = parts_.field<label>("type");
+    labelField& patch = parts_.field<label>("patch");
+    labelField& id = parts_.field<label>("id");
+    forAll(fluid.positions(), i)
+    {
+        x[i] = fluid.positions()[i];
+        type[i] = label(particleKind::fluid);
+        patch[i] = -1;
+    }
+    forAll(vertices, v)
+    {
+        const label i = nFluid_ + v;
+        x[i] = vertices[v];
+        type[i] = label(particleKind::wallVertex);
+        patch[i] = walls_->pointPatch()[v];
+    }
+    forAll(id, i)
+    {
+        id[i] = i;
+    }
+    readInitialVelocity();
+}
+
+
+void Foam::SPH::isph::initialise(const scalar rho0)
+{
+    parts_.add<vector2D>("U");
+    parts_.add<scalar>("p");
+    parts_.add<label>("id");
+    parts_.add<label>("type");
+    parts_.add<label>("patch");
+
+    const label nVertices = walls_->points().size();
+    if (isFile(parts_.path()/"positions"))
+    {
+        Info<< "Restarting from " << parts_.path() << nl;
+        parts_.read();
+        const labelField& type = parts_.field<label>("type");
+        nFluid_ = 0;
+        while (nFluid_ < type.size() && type[nFluid_] == label(particleKind::fluid))
+        {
+            ++nFluid_;
+        }
+        if (parts_.size() - nFluid_ != nVertices)
+        {
+            FatalErrorInFunction
+                << parts_.path() << " holds " << parts_.size() - nFluid_
+                << " wall particles after " << nFluid_ << " fluid ones, but"
+                << " constant/sphMesh/walls has " << nVertices << " vertices:"
+                << " the case was not made for ISPH-USAW (boundaryMethod usaw"
+                << " before sphMesh)" << exit(FatalError);
+        }
+    }
+    else
+    {
+        Info<< "Starting from the particles of constant/sphMesh" << nl;
+        initialiseFromSphMesh();
+    }
+
+    // Density is rho everywhere (function objects read V_b = m/rho_b)
+    parts_.add<scalar>("rho", rho0, false);
+
+    Info<< "Particles: " << nFluid_ << " fluid, " << nVertices
+        << " wall vertices" << nl << endl;
+}
+
+
+void Foam::SPH::isph::buildCloud()
+{
+    const fluidProperties fluid(runTime_);
+    initialise(fluid.rho0);
+
+    cloud_.reset
+    (
+        new sphCloud
+        (
+            runTime_, parts_, *kernel_, *walls_, nFluid_, dr_, fluid.rho0,
+            fluid.g, sphCloud::solverDomain(*walls_, kernel_->support())
+        )
+    );
+    forces_.checkDomain(cloud_->dom());
+    usaw_.reset(new usawWalls(*walls_, *kernel_, nFluid_));
+    if (!motion_->movesGeometry())
+    {
+        crossing_.reset(new wallCrossing(*walls_, kernel_->support()));
+    }
+    work_.reset
+    (
+        new isphWork
+        (
+            fluid.rho0, fluid.nu, fluid.g, *cloud_, nbrs_, *usaw_, *motion_
+        )
+    );
+
+    // Vertex particles are fluid particles cut by the wall (000_...
+    // section 2): the share theta_v/(2 pi) of a particle's volume, so that
+    // with the first row dr from the wall the volumes tile the fluid
+    scalarList& V = work_->V;
+    V = dr_*dr_;
+    forAll(walls_->pointAngles(), v)
+    {
+        V[nFluid_ + v] *= walls_->pointAngles()[v]/constant::mathematical::twoPi;
+    }
+    moveWalls::move(*work_, runTime_.value(), true);
+}
+
+
+// ************************************************************************* //
