@@ -120,7 +120,7 @@ public:
             new SPH::sphCloud
             (
                 runTime, parts_, *kernel_, walls_, 9, 0.1, 1000,
-                vector2D::zero, vector2D(-1, -1), vector2D(2, 2)
+                vector2D::zero, SPH::domain(vector2D(-1, -1), vector2D(2, 2))
             )
         );
         stages_.add(new heat(parts_, runTime, failAt));

@@ -53,27 +53,6 @@ Foam::SPH::sphCloud::sphCloud
 }
 
 
-Foam::SPH::sphCloud::sphCloud
-(
-    const Time& runTime,
-    particles& parts,
-    const kernel& W,
-    const wallMesh& walls,
-    const label nFluid,
-    const scalar dr,
-    const scalar rho0,
-    const vector2D& g,
-    const vector2D& boxMin,
-    const vector2D& boxMax
-)
-:
-    sphCloud
-    (
-        runTime, parts, W, walls, nFluid, dr, rho0, g, domain(boxMin, boxMax)
-    )
-{}
-
-
 Foam::SPH::domain Foam::SPH::sphCloud::solverDomain
 (
     const wallMesh& walls,

@@ -71,9 +71,28 @@ Foam::word Foam::SPH::initialField::kind() const
 }
 
 
-bool Foam::SPH::initialField::read
+namespace Foam
+{
+namespace SPH
+{
+    // The z component of a vector is dropped
+    inline void assign(vector2D& to, const vector& from)
+    {
+        to = vector2D(from.x(), from.y());
+    }
+    inline void assign(scalar& to, const scalar from)
+    {
+        to = from;
+    }
+}
+}
+
+
+template<class Type, class FileType>
+bool Foam::SPH::initialField::readAs
 (
-    UList<vector2D>& values,
+    UList<Type>& values,
+    const word& listType,
     const string& expected
 ) const
 {
@@ -81,24 +100,38 @@ bool Foam::SPH::initialField::read
     const word kind(is);
     if (kind == "uniform")
     {
-        const vector v(is);
-        values = vector2D(v.x(), v.y());
+        FileType v;
+        is >> v;
+        forAll(values, i)
+        {
+            assign(values[i], v);
+        }
         return true;
     }
     if (kind != "nonuniform")
     {
-        badKind(is, kind, "vector", expected);
+        badKind(is, kind, listType, expected);
     }
-    const vectorField list(is);
+    const Field<FileType> list(is);
     if (list.size() != values.size())
     {
         badSize(is, list.size(), values.size());
     }
     forAll(list, i)
     {
-        values[i] = vector2D(list[i].x(), list[i].y());
+        assign(values[i], list[i]);
     }
     return false;
+}
+
+
+bool Foam::SPH::initialField::read
+(
+    UList<vector2D>& values,
+    const string& expected
+) const
+{
+    return readAs<vector2D, vector>(values, "vector", expected);
 }
 
 
@@ -108,27 +141,7 @@ bool Foam::SPH::initialField::read
     const string& expected
 ) const
 {
-    ITstream& is = stream();
-    const word kind(is);
-    if (kind == "uniform")
-    {
-        values = readScalar(is);
-        return true;
-    }
-    if (kind != "nonuniform")
-    {
-        badKind(is, kind, "scalar", expected);
-    }
-    const scalarField list(is);
-    if (list.size() != values.size())
-    {
-        badSize(is, list.size(), values.size());
-    }
-    forAll(list, i)
-    {
-        values[i] = list[i];
-    }
-    return false;
+    return readAs<scalar, scalar>(values, "scalar", expected);
 }
 
 
