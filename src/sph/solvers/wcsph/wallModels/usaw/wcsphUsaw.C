@@ -1,0 +1,224 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "wcsphUsaw.H"
+#include "wcsphUsawTemplates.C"
+#include "wcsphWallPressure.H"
+#include "kernelDispatch.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace SPH
+{
+    defineTypeNameAndDebug(wcsphUsaw, 0);
+    addToRunTimeSelectionTable(wcsphWallModel, wcsphUsaw, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- The wall conditions these walls support, or an error naming the
+    //- file and entry; returns runTime
+    const Foam::Time& checkConditions
+    (
+        const Foam::Time& runTime,
+        const Foam::SPH::wallMesh& walls
+    )
+    {
+        using ct = Foam::SPH::wallConditions::conditionType;
+        Foam::SPH::wallConditions(runTime, walls, "U").allowOnly
+        (
+            {ct::noSlip, ct::fixedValue, ct::uniformFixedValue},
+            "the usaw walls of wcsphFoam (still walls and walls sliding"
+            " along themselves)"
+        );
+        return runTime;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::wcsphUsaw::wcsphUsaw
+(
+    const Time& runTime,
+    const dictionary& schemes,
+    const wallMesh& walls,
+    const kernel& W,
+    wcsphWork& work
+)
+:
+    wcsphWallModel(runTime, schemes, walls, W, work),
+    motion_(checkConditions(runTime, walls), walls),
+    pBackground_(schemes.getOrDefault<scalar>("backgroundPressure", 0)),
+    wallX_(walls.points().size()),
+    wallU_(walls.points().size())
+{
+    if (!(pBackground_ >= 0))
+    {
+        FatalIOErrorInFunction(schemes.lookup("backgroundPressure"))
+            << "Entry backgroundPressure " << pBackground_ << ": expected >= 0"
+            << exit(FatalIOError);
+    }
+    if (motion_.movesGeometry())
+    {
+        FatalErrorInFunction
+            << "Walls that move their geometry (constant/dynamicMeshDict) are"
+            << " not supported by the usaw walls of wcsphFoam: only still"
+            << " walls and walls sliding along themselves" << exit(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::wcsphUsaw::wallParticles
+(
+    DynamicList<vector2D>& x,
+    DynamicList<label>& type,
+    DynamicList<label>& patch
+) const
+{
+    forAll(walls_.points(), v)
+    {
+        x.append(walls_.points()[v]);
+        type.append(label(particleKind::wallVertex));
+        patch.append(walls_.pointPatch()[v]);
+    }
+}
+
+
+void Foam::SPH::wcsphUsaw::checkRestart
+(
+    const fileName& path,
+    const label nFluid,
+    const label nWall
+) const
+{
+    if (nWall != walls_.points().size())
+    {
+        FatalErrorInFunction
+            << path << " holds " << nWall << " wall particles after " << nFluid
+            << " fluid ones, but constant/sphMesh/walls has "
+            << walls_.points().size() << " vertices: the case was not made"
+            << " for boundaryMethod usaw (set it before running sphMesh)"
+            << exit(FatalError);
+    }
+}
+
+
+void Foam::SPH::wcsphUsaw::initialWalls() const
+{
+    wcsphWallModel::initialWalls();
+    const_cast<wcsphUsaw&>(*this).setWallVelocity(runTime_.value());
+}
+
+
+void Foam::SPH::wcsphUsaw::setUp()
+{
+    wcsphWork& w = work_;
+    if (w.parts.size() - w.nFluid != walls_.points().size())
+    {
+        FatalErrorInFunction
+            << "Expected " << walls_.points().size() << " wall vertex"
+            << " particles after the fluid, found " << w.parts.size() - w.nFluid
+            << exit(FatalError);
+    }
+    usaw_.reset(new usawWalls(walls_, kernel_, w.nFluid, w.cloud->dom()));
+
+    // Vertex particles are fluid particles cut by the wall (Leroy et al.
+    // 2014 section 2): the share theta_v/(2 pi) of a particle's mass
+    const label n = w.parts.size();
+    mass_.setSize(n, w.mass());
+    forAll(walls_.pointAngles(), v)
+    {
+        mass_[w.nFluid + v] *=
+            walls_.pointAngles()[v]/constant::mathematical::twoPi;
+    }
+    V_.setSize(n);
+    pTotal_.setSize(n);
+    divU_.setSize(n);
+    gradP_.setSize(n);
+    viscous_.setSize(n, vector2D::zero);
+    setWallVelocity(runTime_.value());
+}
+
+
+void Foam::SPH::wcsphUsaw::setWallVelocity(const scalar t)
+{
+    if (!motion_.any())
+    {
+        return;
+    }
+    motion_.vertices(t, wallX_, wallU_);
+    vector2D* U = work_.parts.field<vector2D>("U").data();
+    forAll(wallU_, v)
+    {
+        U[work_.nFluid + v] = wallU_[v];
+    }
+}
+
+
+void Foam::SPH::wcsphUsaw::rates(const scalar t)
+{
+    wcsphWork& w = work_;
+    setWallVelocity(t);
+    usaw_->update(w.parts.positions());
+
+    dispatch(kernel_, [&](const auto& W)
+    {
+        shepardWallPressure(W, w, 0);
+        w.setSoundSpeeds();
+        fluidRates(W);
+    });
+}
+
+
+void Foam::SPH::wcsphUsaw::describe(Ostream& os, const char* indent) const
+{
+    const wcsphWork& w = work_;
+    os  << indent << "walls              USAW: gamma and grad gamma_as analytical,"
+        << " eqs. (56)-(64), (6)" << nl
+        << indent << "wall particles     vertex particles, mass rho0 theta/(2 pi)"
+        << " dr^2, wall velocity; pressure eq. (10) of 004_..., density"
+        << " from eq. (4)" << nl
+        << indent << "equation of state  Tait eq. (4): c0 " << w.c0 << ", gamma "
+        << w.gamma << ", b0 " << w.b0 << nl
+        << indent << "continuity         -rho D{u}, eq. (9)";
+    if (w.densityDiffusion)
+    {
+        os  << ", Rusanov density diffusion 004_... (6)-(7) of "
+            << (
+                   w.densityDiffusionHydrostatic
+                 ? "rho - rho_hydrostatic"
+                 : "rho, as printed"
+               );
+    }
+    os  << nl << indent << "momentum           -G+{p + p_b}/rho, eqs. (5), (13):"
+        << " background pressure p_b " << pBackground_ << ", gravity " << w.g << nl << indent << "viscosity          ";
+    if (w.viscous)
+    {
+        os  << "L{mu, u}/rho with the wall friction, eqs. (15)-(17), nu "
+            << w.nu << nl;
+    }
+    else
+    {
+        os  << "none (nu = " << w.nu << ")" << nl;
+    }
+    if (motion_.any())
+    {
+        os  << indent << "wall velocity      at each stage's time:" << nl;
+        motion_.write(os, string(indent) + "    ");
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,56 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "wcsphWallModel.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace SPH
+{
+    defineTypeNameAndDebug(wcsphWallModel, 0);
+    defineRunTimeSelectionTable(wcsphWallModel, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::wcsphWallModel::wcsphWallModel
+(
+    const Time& runTime,
+    const dictionary& schemes,
+    const wallMesh& walls,
+    const kernel& W,
+    wcsphWork& work
+)
+:
+    runTime_(runTime),
+    schemes_(schemes),
+    walls_(walls),
+    kernel_(W),
+    work_(work)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::wcsphWallModel::initialWalls() const
+{
+    const wcsphWork& work = work_;
+    // Walls at rest at rho0
+    vector2D* U = work.parts.field<vector2D>("U").data();
+    scalar* p = work.parts.field<scalar>("p").data();
+    scalar* rho = work.parts.field<scalar>("rho").data();
+    for (label i = work.nFluid; i < work.parts.size(); ++i)
+    {
+        U[i] = vector2D::zero;
+        rho[i] = work.rho0;
+        p[i] = 0;
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,187 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    The particles of wcsphFoam at the start: the fluid of constant/sphMesh
+    and the wall particles its wall model expects, with 0/U and 0/p; or a
+    restart.
+
+\*---------------------------------------------------------------------------*/
+
+#include "wcsph.H"
+#include "Time.H"
+#include "OSspecific.H"
+#include "initialField.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::wcsph::initialiseFromSphMesh()
+{
+    particles fluid(runTime_, runTime_.constant(), "sphMesh/fluid", false);
+    fluid.read();
+
+    // The wall particles the wall model expects (dummies, wall vertices)
+    DynamicList<vector2D> wallX;
+    DynamicList<label> wallType, wallPatch;
+    wallModel_->wallParticles(wallX, wallType, wallPatch);
+
+    const label nFluid = fluid.size();
+    work_.nFluid = nFluid;
+    parts_.resize(nFluid + wallX.size());
+    vector2DField& x = parts_.positions();
+    labelField& type = parts_.field<label>("type");
+    labelField& patch = parts_.field<label>("patch");
+    labelField& id = parts_.field<label>("id");
+
+    forAll(fluid.positions(), i)
+    {
+        x[i] = fluid.positions()[i];
+        type[i] = label(particleKind::fluid);
+        patch[i] = -1;
+    }
+    forAll(wallX, w)
+    {
+        const label i = nFluid + w;
+        x[i] = wallX[w];
+        type[i] = wallType[w];
+        patch[i] = wallPatch[w];
+    }
+    forAll(id, i)
+    {
+        id[i] = i;
+    }
+    setInitialFields();
+}
+
+
+void Foam::SPH::wcsph::hydrostaticPressure(ITstream& is)
+{
+    const scalar gMag = mag(work_.g);
+    if (mag(work_.g.x()) > SMALL*gMag)
+    {
+        FatalIOErrorInFunction(is)
+            << "internalField hydrostatic needs gravity along -y"
+            << exit(FatalIOError);
+    }
+
+    // The top of each lattice column of water is its free surface
+    HashTable<scalar, label, Hash<label>> top;
+    const vector2DField& x = parts_.positions();
+    for (label i = 0; i < work_.nFluid; ++i)
+    {
+        const label col = std::lround(x[i].x()/dr_);
+        auto it = top.find(col);
+        if (!it.found()) top.set(col, x[i].y());
+        else *it = max(*it, x[i].y());
+    }
+    scalarField& p = parts_.field<scalar>("p");
+    for (label i = 0; i < work_.nFluid; ++i)
+    {
+        const scalar surface = top[std::lround(x[i].x()/dr_)] + 0.5*dr_;
+        p[i] = work_.rho0*gMag*(surface - x[i].y());
+    }
+}
+
+
+void Foam::SPH::wcsph::setInitialFields()
+{
+    const word t0(runTime_.timeName());
+    const label nFluid = work_.nFluid;
+    SubList<vector2D> U(parts_.field<vector2D>("U"), nFluid);
+    SubList<scalar> p(parts_.field<scalar>("p"), nFluid);
+    U = vector2D::zero;
+    p = 0;
+
+    const initialField U0(runTime_, "U");
+    if (!U0.found())
+    {
+        Info<< "No " << t0/"U" << ": the fluid starts at rest" << nl;
+    }
+    else if (U0.read(U))
+    {
+        Info<< "Initial velocity " << U[0] << " from " << U0.path() << nl;
+    }
+    else
+    {
+        Info<< "Initial velocity per particle from " << U0.path() << nl;
+    }
+
+    const initialField p0(runTime_, "p");
+    if (!p0.found())
+    {
+        Info<< "No " << t0/"p" << ": the fluid starts at p = 0" << nl;
+    }
+    else if (p0.kind() == "hydrostatic")
+    {
+        hydrostaticPressure(p0.stream());
+        Info<< "Initial pressure hydrostatic (rho0 |g| depth below the top"
+            << " of each water column) from " << p0.path() << nl;
+    }
+    else if (p0.read(p, " or 'internalField hydrostatic;'"))
+    {
+        Info<< "Initial pressure " << p[0] << " from " << p0.path() << nl;
+    }
+    else
+    {
+        Info<< "Initial pressure per particle from " << p0.path() << nl;
+    }
+
+    // Density from the equation of state; the walls' from the model
+    const scalarField& pAll = parts_.field<scalar>("p");
+    scalarField& rho = parts_.field<scalar>("rho");
+    for (label i = 0; i < nFluid; ++i)
+    {
+        rho[i] = work_.density(pAll[i]);
+    }
+    wallModel_->initialWalls();
+}
+
+
+void Foam::SPH::wcsph::initialise()
+{
+    parts_.add<vector2D>("U");
+    parts_.add<scalar>("rho");
+    parts_.add<scalar>("p");
+    parts_.add<label>("id");
+    parts_.add<label>("type");
+    parts_.add<label>("patch");
+
+    if (isFile(parts_.path()/"positions"))
+    {
+        Info<< "Restarting from " << parts_.path() << nl;
+        parts_.read();
+        label& nFluid = work_.nFluid;
+        nFluid = 0;
+        const labelField& type = parts_.field<label>("type");
+        while (nFluid < type.size() && type[nFluid] == label(particleKind::fluid))
+        {
+            ++nFluid;
+        }
+        wallModel_->checkRestart(parts_.path(), nFluid, parts_.size() - nFluid);
+    }
+    else
+    {
+        Info<< "Starting from the particles of constant/sphMesh" << nl;
+        initialiseFromSphMesh();
+    }
+
+    const label n = parts_.size();
+    work_.dUdt.setSize(work_.nFluid);
+    work_.drhodt.setSize(work_.nFluid);
+    x0_.setSize(work_.nFluid);
+    U0_.setSize(work_.nFluid);
+    sumX_.setSize(work_.nFluid);
+    sumU_.setSize(work_.nFluid);
+    rhoStart_.setSize(work_.nFluid);
+    sumRho_.setSize(work_.nFluid);
+
+    Info<< "Particles: " << work_.nFluid << " fluid, " << n - work_.nFluid << " "
+        << wallModel_->wallParticleName()
+        << nl << endl;
+}
+
+
+
+// ************************************************************************* //
