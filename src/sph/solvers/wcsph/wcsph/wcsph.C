@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wcsph.H"
+#include "fvOptionForces.H"
 #include "memberStage.H"
 #include "OStringStream.H"
 #include "fluidProperties.H"
@@ -144,6 +145,18 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     }
     kernel_ = kernel::New(schemes_, dr_);
     readSchemes();
+
+    // Body forces act in isphFoam's prediction only: refuse them here
+    // rather than run without them
+    const fvOptionForces forces(runTime);
+    if (!forces.empty())
+    {
+        FatalErrorInFunction
+            << runTime.constant()/"fvOptions" << " has the body force "
+            << forces.first().name() << ": wcsphFoam does not apply"
+            << " constant/fvOptions yet (isphFoam does); remove the file"
+            << " or run isphFoam" << exit(FatalError);
+    }
     wallModel_ = wcsphWallModel::New(runTime, schemes_, *walls_, *kernel_, work_);
     skin_ = skinByH_*kernel_->h();
     initialise();
