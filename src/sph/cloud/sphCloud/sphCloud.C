@@ -85,4 +85,55 @@ void Foam::SPH::sphCloud::updateCells()
 }
 
 
+Foam::label Foam::SPH::sphCloud::layOut
+(
+    const Time& runTime,
+    particles& parts,
+    const UList<vector2D>& wallX,
+    const labelUList& wallType,
+    const labelUList& wallPatch
+)
+{
+    particles fluid(runTime, runTime.constant(), "sphMesh/fluid", false);
+    fluid.read();
+
+    const label nFluid = fluid.size();
+    parts.resize(nFluid + wallX.size());
+    vector2DField& x = parts.positions();
+    labelField& type = parts.field<label>("type");
+    labelField& patch = parts.field<label>("patch");
+    labelField& id = parts.field<label>("id");
+    forAll(fluid.positions(), i)
+    {
+        x[i] = fluid.positions()[i];
+        type[i] = label(particleKind::fluid);
+        patch[i] = -1;
+    }
+    forAll(wallX, w)
+    {
+        const label i = nFluid + w;
+        x[i] = wallX[w];
+        type[i] = wallType[w];
+        patch[i] = wallPatch[w];
+    }
+    forAll(id, i)
+    {
+        id[i] = i;
+    }
+    return nFluid;
+}
+
+
+Foam::label Foam::SPH::sphCloud::countFluid(const particles& parts)
+{
+    const labelField& type = parts.field<label>("type");
+    label nFluid = 0;
+    while (nFluid < type.size() && type[nFluid] == label(particleKind::fluid))
+    {
+        ++nFluid;
+    }
+    return nFluid;
+}
+
+
 // ************************************************************************* //

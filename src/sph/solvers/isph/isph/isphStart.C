@@ -41,34 +41,13 @@ void Foam::SPH::isph::readInitialVelocity()
 
 void Foam::SPH::isph::initialiseFromSphMesh()
 {
-    particles fluid(runTime_, runTime_.constant(), "sphMesh/fluid", false);
-    fluid.read();
-
-    nFluid_ = fluid.size();
     const List<vector2D>& vertices = walls_->points();
-    parts_.resize(nFluid_ + vertices.size());
-
-    vector2DField& x = parts_.positions();
-    labelField& type = parts_.field<label>("type");
-    labelField& patch = parts_.field<label>("patch");
-    labelField& id = parts_.field<label>("id");
-    forAll(fluid.positions(), i)
-    {
-        x[i] = fluid.positions()[i];
-        type[i] = label(particleKind::fluid);
-        patch[i] = -1;
-    }
-    forAll(vertices, v)
-    {
-        const label i = nFluid_ + v;
-        x[i] = vertices[v];
-        type[i] = label(particleKind::wallVertex);
-        patch[i] = walls_->pointPatch()[v];
-    }
-    forAll(id, i)
-    {
-        id[i] = i;
-    }
+    nFluid_ = sphCloud::layOut
+    (
+        runTime_, parts_, vertices,
+        labelList(vertices.size(), label(particleKind::wallVertex)),
+        walls_->pointPatch()
+    );
     readInitialVelocity();
 }
 
@@ -86,12 +65,7 @@ void Foam::SPH::isph::initialise(const scalar rho0)
     {
         Info<< "Restarting from " << parts_.path() << nl;
         parts_.read();
-        const labelField& type = parts_.field<label>("type");
-        nFluid_ = 0;
-        while (nFluid_ < type.size() && type[nFluid_] == label(particleKind::fluid))
-        {
-            ++nFluid_;
-        }
+        nFluid_ = sphCloud::countFluid(parts_);
         if (parts_.size() - nFluid_ != nVertices)
         {
             FatalErrorInFunction

@@ -19,39 +19,12 @@ Description
 
 void Foam::SPH::wcsph::initialiseFromSphMesh()
 {
-    particles fluid(runTime_, runTime_.constant(), "sphMesh/fluid", false);
-    fluid.read();
-
     // The wall particles the wall model expects (dummies, wall vertices)
     DynamicList<vector2D> wallX;
     DynamicList<label> wallType, wallPatch;
     wallModel_->wallParticles(wallX, wallType, wallPatch);
-
-    const label nFluid = fluid.size();
-    work_.nFluid = nFluid;
-    parts_.resize(nFluid + wallX.size());
-    vector2DField& x = parts_.positions();
-    labelField& type = parts_.field<label>("type");
-    labelField& patch = parts_.field<label>("patch");
-    labelField& id = parts_.field<label>("id");
-
-    forAll(fluid.positions(), i)
-    {
-        x[i] = fluid.positions()[i];
-        type[i] = label(particleKind::fluid);
-        patch[i] = -1;
-    }
-    forAll(wallX, w)
-    {
-        const label i = nFluid + w;
-        x[i] = wallX[w];
-        type[i] = wallType[w];
-        patch[i] = wallPatch[w];
-    }
-    forAll(id, i)
-    {
-        id[i] = i;
-    }
+    work_.nFluid =
+        sphCloud::layOut(runTime_, parts_, wallX, wallType, wallPatch);
     setInitialFields();
 }
 
@@ -152,13 +125,8 @@ void Foam::SPH::wcsph::initialise()
     {
         Info<< "Restarting from " << parts_.path() << nl;
         parts_.read();
-        label& nFluid = work_.nFluid;
-        nFluid = 0;
-        const labelField& type = parts_.field<label>("type");
-        while (nFluid < type.size() && type[nFluid] == label(particleKind::fluid))
-        {
-            ++nFluid;
-        }
+        const label nFluid = sphCloud::countFluid(parts_);
+        work_.nFluid = nFluid;
         wallModel_->checkRestart(parts_.path(), nFluid, parts_.size() - nFluid);
     }
     else
