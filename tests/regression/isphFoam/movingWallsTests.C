@@ -13,6 +13,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "testCase.H"
+#include "wallTestTools.H"
 #include "wallBoundaries.H"
 #include "wallShape.H"
 #include "mathematicalConstants.H"
@@ -26,33 +27,14 @@ namespace
     //- Walls from "name { type ...; ... }" patch dictionaries
     SPH::wallMesh makeWalls(const std::string& text)
     {
-        const dictionary d(sphTest::dict(text));
-        wordList names;
-        List<List<SPH::wallChain>> chains;
-        for (const entry& e : d)
-        {
-            names.append(e.keyword());
-            chains.append(SPH::wallShape::New(e.keyword(), e.dict())->chains(dr));
-        }
-        return SPH::wallMesh(names, chains, dr);
+        return sphTest::makeWalls(text, dr);
     }
 
     const std::string cavity =
         "lid { type line; points ((1 1) (0 1)); }"
         " fixedWalls { type polyline; points ((0 1) (0 0) (1 0) (1 1)); }";
 
-    std::string errorOf(const std::function<void()>& f)
-    {
-        try
-        {
-            f();
-        }
-        catch (const Foam::error& err)
-        {
-            return std::string(err.message());
-        }
-        return "";
-    }
+    using sphTest::errorOf;
 
     class movingWalls : public ::testing::Test
     {

@@ -11,6 +11,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "testCase.H"
+#include "wallTestTools.H"
 #include "wallConditions.H"
 #include "wallBoundaries.H"
 #include "wallShape.H"
@@ -25,15 +26,7 @@ namespace
     //- Walls from "name { type ...; ... }" patch dictionaries
     SPH::wallMesh makeWalls(const std::string& text)
     {
-        const dictionary d(sphTest::dict(text));
-        wordList names;
-        List<List<SPH::wallChain>> chains;
-        for (const entry& e : d)
-        {
-            names.append(e.keyword());
-            chains.append(SPH::wallShape::New(e.keyword(), e.dict())->chains(dr));
-        }
-        return SPH::wallMesh(names, chains, dr);
+        return sphTest::makeWalls(text, dr);
     }
 
     //- The unit cavity: its lid y = 1 and three fixed walls
@@ -41,18 +34,7 @@ namespace
         "lid { type line; points ((1 1) (0 1)); }"
         " fixedWalls { type polyline; points ((0 1) (0 0) (1 0) (1 1)); }";
 
-    std::string errorOf(const std::function<void()>& f)
-    {
-        try
-        {
-            f();
-        }
-        catch (const Foam::error& err)
-        {
-            return std::string(err.message());
-        }
-        return "";
-    }
+    using sphTest::errorOf;
 
     std::string errorOf(const std::string& boundaryField, const std::string& field = "U")
     {

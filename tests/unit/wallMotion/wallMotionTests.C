@@ -13,6 +13,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "testCase.H"
+#include "wallTestTools.H"
 #include "wallMotion.H"
 #include "wallShape.H"
 
@@ -26,15 +27,7 @@ namespace
 
     SPH::wallMesh makeWalls(const std::string& text)
     {
-        const dictionary d(sphTest::dict(text));
-        wordList names;
-        List<List<SPH::wallChain>> chains;
-        for (const entry& e : d)
-        {
-            names.append(e.keyword());
-            chains.append(SPH::wallShape::New(e.keyword(), e.dict())->chains(dr));
-        }
-        return SPH::wallMesh(names, chains, dr);
+        return sphTest::makeWalls(text, dr);
     }
 
     //- A drum of radius 0.5 about (0.3 0.2) and a still line
@@ -50,18 +43,7 @@ namespace
             " multiSolidBodyMotionSolverCoeffs { " + entries + " }";
     }
 
-    std::string errorOf(const std::function<void()>& f)
-    {
-        try
-        {
-            f();
-        }
-        catch (const Foam::error& err)
-        {
-            return std::string(err.message());
-        }
-        return "";
-    }
+    using sphTest::errorOf;
 
     class wallMotion : public ::testing::Test
     {
