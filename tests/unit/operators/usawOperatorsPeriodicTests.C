@@ -19,6 +19,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "operatorTestTools.H"
+#include "wallTestTools.H"
 #include "usawOperators.H"
 
 using namespace Foam;
@@ -45,22 +46,12 @@ namespace
 
         static SPH::wallMesh makePeriodicWalls(const SPH::domain& dom)
         {
-            const dictionary d
+            return sphTest::makeWalls
             (
-                sphTest::dict
-                (
-                    "lowerWall { type line; points ((0 0) (1 0)); }"
-                    " upperWall { type line; points ((1 1) (0 1)); }"
-                )
+                "lowerWall { type line; points ((0 0) (1 0)); }"
+                " upperWall { type line; points ((1 1) (0 1)); }",
+                dr, dom
             );
-            wordList names;
-            List<List<SPH::wallChain>> chains;
-            for (const entry& e : d)
-            {
-                names.append(e.keyword());
-                chains.append(SPH::wallShape::New(e.keyword(), e.dict())->chains(dr));
-            }
-            return SPH::wallMesh(names, chains, dr, dom);
         }
 
         channelCase()

@@ -17,6 +17,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "usawTestTools.H"
+#include "wallTestTools.H"
 #include "usawWalls.H"
 
 #include <algorithm>
@@ -37,22 +38,12 @@ namespace
     //- The channel's walls from x = 0 to 1, joined through the seam
     SPH::wallMesh periodicWalls()
     {
-        const dictionary d
+        return sphTest::makeWalls
         (
-            sphTest::dict
-            (
-                "lowerWall { type line; points ((0 0) (1 0)); }"
-                " upperWall { type line; points ((1 1) (0 1)); }"
-            )
+            "lowerWall { type line; points ((0 0) (1 0)); }"
+            " upperWall { type line; points ((1 1) (0 1)); }",
+            dr, channel
         );
-        wordList names;
-        List<List<SPH::wallChain>> chains;
-        for (const entry& e : d)
-        {
-            names.append(e.keyword());
-            chains.append(SPH::wallShape::New(e.keyword(), e.dict())->chains(dr));
-        }
-        return SPH::wallMesh(names, chains, dr, channel);
     }
 
     //- Long walls, not periodic, the points far from their ends
