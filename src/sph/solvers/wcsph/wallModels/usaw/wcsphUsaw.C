@@ -147,6 +147,17 @@ void Foam::SPH::wcsphUsaw::rates(const scalar t)
 }
 
 
+void Foam::SPH::wcsphUsaw::fluidVolumes(scalarList& V) const
+{
+    const scalarField& rho = work_.parts.field<scalar>("rho");
+    V.setSize(rho.size());
+    forAll(V, i)
+    {
+        V[i] = mass_[i]/rho[i];
+    }
+}
+
+
 void Foam::SPH::wcsphUsaw::describe(Ostream& os, const char* indent) const
 {
     const wcsphWork& w = work_;
