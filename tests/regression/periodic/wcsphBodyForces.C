@@ -22,6 +22,7 @@ Description
 #include "particles.H"
 #include "Time.H"
 #include "mathematicalConstants.H"
+#include "OSspecific.H"
 
 #include <regex>
 
@@ -191,6 +192,35 @@ TEST(wcsphBodyForces, constantForceAcceleratesTheFluidAtFWithUsawWalls)
 TEST(wcsphBodyForces, constantForceAcceleratesTheFluidAtFWithDummyWalls)
 {
     expectAccelerationAtF("dummyRepulsive");
+}
+
+
+TEST(wcsphBodyForces, gravityAlongThePeriodIsTheConstantForceBitForBit)
+{
+    // constant/g (1.2 0 0) along the periodic x and no fvOptions: the
+    // hydrostatic terms (density diffusion's step, wall pressure) must not
+    // see it (rho g.x is not periodic) and it must act as the constant
+    // force (1.2 0) of fvOptions does: the same fields, byte for byte
+    const fileName force = channel("wcsphPeriodicForce", "10", "constant", "0.1");
+    const fileName gravity = channel("wcsphPeriodicGravity", "10", "constant", "0.1");
+    std::string out;
+    Foam::rm(gravity/"constant"/"fvOptions");
+    ASSERT_EQ
+    (
+        run("sed -i 's/^value .*/value           (1.2 0 0);/' " + gravity/"constant"/"g", out),
+        0
+    ) << out;
+    for (const fileName& dir : {force, gravity})
+    {
+        setEntry(dir/"system"/"controlDict", "writeInterval", "0.1");
+        ASSERT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
+        ASSERT_EQ(run("OMP_NUM_THREADS=1 " + bin + "wcsphFoam -case " + dir, out), 0)
+            << sphTest::logTail(out);
+    }
+    EXPECT_TRUE(has(out, "gravity along the period (1.2 0)")) << out;
+    EXPECT_TRUE(has(out, "gravity (0 0)")) << out;
+    ASSERT_TRUE(isDir(force/"0.1"));
+    EXPECT_EQ(sphTest::differences(force/"0.1", gravity/"0.1"), "");
 }
 
 
