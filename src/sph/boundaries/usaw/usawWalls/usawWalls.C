@@ -11,9 +11,14 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::SPH::usawWalls::wendlandH(const kernel& W)
+Foam::scalar Foam::SPH::usawWalls::wendlandH
+(
+    const wallMesh& walls,
+    const kernel& W
+)
 {
-    if (typeid(W) != typeid(wendlandC2))
+    // Without segments gamma is 1 and no integral is taken: any kernel
+    if (walls.segments().size() && typeid(W) != typeid(wendlandC2))
     {
         FatalErrorInFunction
             << "USAW walls need the wendlandC2 kernel: the analytical wall"
@@ -108,12 +113,18 @@ void Foam::SPH::usawWalls::setGeometry(const UList<vector2D>& points)
 
     // The search box: in a non-periodic direction the walls' extent plus a
     // margin (a straight wall has none of its own); positions outside it
-    // are still found, only less efficiently
+    // are still found, only less efficiently. No walls (dummy particles
+    // instead): the domain's box, or any box, for a search that finds none
     const scalar radius = support_ + maxHalfLength_;
     vector2D lo(domain_.min()), hi(domain_.max());
     for (direction d = 0; d < 2; ++d)
     {
-        if (!domain_.periodic(d))
+        if (points.empty() && !(hi[d] > lo[d]))
+        {
+            lo[d] = 0;
+            hi[d] = radius;
+        }
+        if (!domain_.periodic(d) && points.size())
         {
             lo[d] = GREAT;
             hi[d] = -GREAT;
@@ -176,7 +187,7 @@ Foam::SPH::usawWalls::usawWalls
 )
 :
     walls_(walls),
-    integrals_(wendlandH(W)),
+    integrals_(wendlandH(walls, W)),
     support_(W.support()),
     vertexStart_(vertexStart),
     domain_(dom),

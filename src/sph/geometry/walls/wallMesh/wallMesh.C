@@ -246,6 +246,14 @@ Foam::SPH::wallMesh::wallMesh
 }
 
 
+Foam::SPH::wallMesh::wallMesh(const SPH::domain& dom)
+:
+    domain_(dom)
+{
+    calcGeometry();
+}
+
+
 Foam::SPH::wallMesh::wallMesh(const objectRegistry& db)
 :
     domain_(vector2D::zero, vector2D::zero)

@@ -5,6 +5,7 @@
 #include "wcsph.H"
 #include "wcsphBodyForces.H"
 #include "memberStage.H"
+#include "wcsphShifting.H"
 #include "OStringStream.H"
 #include "fluidProperties.H"
 #include "Time.H"
@@ -230,6 +231,17 @@ void Foam::SPH::wcsph::addStages()
                 "wallBounce", {"positions", "U"}, {"positions", "U"},
                 "particles that cross a wall in a step bounce back (a safety"
                 " net; counted in the log)", *this, &wcsph::wallBounce
+            )
+        );
+    }
+    if (schemes_.getOrDefault<bool>("shifting", false))
+    {
+        stages_.add
+        (
+            new wcsphShifting
+            (
+                schemes_, work_, *wallModel_, *kernel_,
+                [this]() { updateNeighbours(); }
             )
         );
     }

@@ -1,0 +1,174 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "wcsphShifting.H"
+#include "kernelDispatch.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::SPH::wcsphShifting::velocityScale>
+Foam::SPH::wcsphShifting::velocityScaleNames
+({
+    { velocityScale::local, "local" },
+    { velocityScale::max, "max" },
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::wcsphShifting::wcsphShifting
+(
+    const dictionary& schemes,
+    wcsphWork& work,
+    wcsphWallModel& wallModel,
+    const kernel& W,
+    const std::function<void()>& searchNeighbours
+)
+:
+    stage("shifting", {"positions", "U", "rho"}, {"positions", "U", "rho"}),
+    work_(work),
+    wallModel_(wallModel),
+    kernel_(W),
+    searchNeighbours_(searchNeighbours),
+    coeff_(schemes.getOrDefault<scalar>("shiftCoeff", 2)),
+    velocity_
+    (
+        velocityScaleNames.getOrDefault
+        (
+            "shiftVelocity", schemes, velocityScale::local
+        )
+    ),
+    walls_(wallModel.operatorWalls()),
+    maxShift_(0)
+{
+    if (!(coeff_ > 0))
+    {
+        FatalIOErrorInFunction(schemes.lookup("shiftCoeff"))
+            << "Entry shiftCoeff " << coeff_ << ": expected > 0 (A of the"
+            << " shift's D = A h U dt; 2 by default)" << exit(FatalIOError);
+    }
+    // Section 3.2: "D{r} <= 1.5 in 2-D"
+    const scalar divRMax =
+        schemes.getOrDefault<scalar>("freeSurfaceDivR", 1.5);
+    if (!(divRMax > 0 && divRMax < 2))
+    {
+        FatalIOErrorInFunction(schemes.lookup("freeSurfaceDivR"))
+            << "Entry freeSurfaceDivR " << divRMax << ": expected 0 <"
+            << " freeSurfaceDivR < 2 (D{r} is 2 inside the fluid)"
+            << exit(FatalIOError);
+    }
+    if (!walls_)
+    {
+        noWalls_.reset(new wallMesh(work.cloud->dom()));
+        noUsaw_.reset(new usawWalls(*noWalls_, W, work.nFluid, work.cloud->dom()));
+        walls_ = noUsaw_.get();
+    }
+    wallModel.particleMasses(mass_);
+    V_.setSize(mass_.size());
+    D_.setSize(work.nFluid);
+    checkConfined(schemes, divRMax);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::wcsphShifting::prepare()
+{
+    searchNeighbours_();
+    walls_->update(work_.parts.positions());
+    const scalar* rho = work_.parts.field<scalar>("rho").cdata();
+    forAll(V_, b)
+    {
+        V_[b] = mass_[b]/rho[b];
+    }
+}
+
+
+void Foam::SPH::wcsphShifting::checkConfined
+(
+    const dictionary& schemes,
+    const scalar divRMax
+)
+{
+    prepare();
+    scalarList divR(work_.parts.size());
+    dispatch(kernel_, [&](const auto& K)
+    {
+        usaw::divPosition(K, work_.nbrs, *walls_, V_, divR);
+    });
+    label nSurface = 0;
+    label first = -1;
+    for (label i = 0; i < work_.nFluid; ++i)
+    {
+        if (divR[i] <= divRMax)
+        {
+            if (first < 0) first = i;
+            ++nSurface;
+        }
+    }
+    if (nSurface)
+    {
+        FatalIOErrorInFunction(schemes.lookup("shifting"))
+            << "shifting yes needs a confined flow, but " << nSurface
+            << " fluid particles are on a free surface (D{r} <= " << divRMax
+            << ", Leroy et al. 2014 section 3.2; the first at "
+            << work_.parts.positions()[first] << ", D{r} " << divR[first]
+            << ")." << nl
+            << "wcsphFoam's shifting has no free-surface treatment (isphFoam"
+            << " switches it off near the surface): set 'shifting no;'"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::wcsphShifting::describe(Ostream& os) const
+{
+    os  << "Lind et al. 2012 with D = A h U dt of Skillen et al. 2013,"
+        << " A = shiftCoeff " << coeff_ << ", U = "
+        << (velocity_ == velocityScale::local ? "|u_a|" : "max |u|")
+        << "; G{1} (37), u and rho corrected by (38); confined flow"
+        << (walls_ == noUsaw_.get() ? " (SPH sums over fluid and walls)" : "");
+}
+
+
+void Foam::SPH::wcsphShifting::execute(const scalar dt)
+{
+    prepare();
+
+    vector2DField& U = work_.parts.field<vector2D>("U");
+    const label nFluid = work_.nFluid;
+    const scalar coeff = coeff_*kernel_.h()*dt;
+    if (velocity_ == velocityScale::local)
+    {
+        for (label i = 0; i < nFluid; ++i)
+        {
+            D_[i] = coeff*mag(U[i]);
+        }
+    }
+    else
+    {
+        scalar maxU2 = 0;
+        for (label i = 0; i < nFluid; ++i)
+        {
+            maxU2 = max(maxU2, magSqr(U[i]));
+        }
+        D_ = coeff*std::sqrt(maxU2);
+    }
+
+    dispatch(kernel_, [&](const auto& K)
+    {
+        maxShift_ = shift_.apply
+        (
+            K, work_.nbrs, *walls_, V_, work_.cloud->dom(), nFluid, D_,
+            work_.parts.positions(), U, work_.parts.field<scalar>("rho")
+        );
+    });
+}
+
+
+// ************************************************************************* //
