@@ -128,17 +128,17 @@ void Foam::SPH::isph::addStages()
     stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (30)"));
     if (moving) stages_.add(new moveWalls(w, runTime_, false));
     stages_.add(new usawNeighbours(w, ""));
+    const bool forces = !forces_.empty() || w.gPeriodic != vector2D::zero;
     if (implicitViscosity_)
     {
-        stages_.add(new implicitViscousPrediction(w, solution_));
+        // The forces inside the implicit step (bodyForces.H)
+        if (forces) stages_.add(new bodyForces(w, forces_, true));
+        stages_.add(new implicitViscousPrediction(w, solution_, forces));
     }
     else
     {
         stages_.add(new viscousPrediction(w));
-    }
-    if (!forces_.empty() || w.gPeriodic != vector2D::zero)
-    {
-        stages_.add(new bodyForces(w, forces_));
+        if (forces) stages_.add(new bodyForces(w, forces_));
     }
     if (renormalised) stages_.add(new renormalisation(w));
     if (freeSurface_) stages_.add(new freeSurface(w, divRMax));

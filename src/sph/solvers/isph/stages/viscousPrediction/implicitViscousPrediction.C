@@ -31,12 +31,16 @@ const Foam::dictionary& Foam::SPH::implicitViscousPrediction::solverDict
 Foam::SPH::implicitViscousPrediction::implicitViscousPrediction
 (
     isphWork& work,
-    const dictionary& solution
+    const dictionary& solution,
+    const bool afterForces
 )
 :
     stage
     (
-        "viscousPrediction", {"U"}, {"Ustar"}, "viscous prediction"
+        "viscousPrediction",
+        afterForces ? wordList({"U", "Ustar"}) : wordList({"U"}),
+        {"Ustar"},
+        "viscous prediction"
     ),
     work_(work),
     solverUx_(linearSolver::New("Ux", solverDict(solution))),
@@ -48,7 +52,9 @@ Foam::SPH::implicitViscousPrediction::implicitViscousPrediction
             "stopIfNotConverged", true
         )
     ),
+    afterForces_(afterForces),
     step_(work.nbrs, work.usaw, work.V, work.nFluid),
+    uOld_(afterForces ? work.parts.size() : 0),
     nIterations_(0)
 {}
 
@@ -68,9 +74,25 @@ void Foam::SPH::implicitViscousPrediction::execute(const scalar dt)
 {
     isphWork& w = work_;
     const vector2DField& U = w.parts.field<vector2D>("U");
+    if (afterForces_)
+    {
+        // The fluid's u* of bodyForces, the vertices' wall velocity
+        for (label i = 0; i < w.nFluid; ++i)
+        {
+            uOld_[i] = w.Ustar[i];
+        }
+        for (label i = w.nFluid; i < uOld_.size(); ++i)
+        {
+            uOld_[i] = U[i];
+        }
+    }
+    const UList<vector2D>& uOld =
+        afterForces_
+      ? static_cast<const UList<vector2D>&>(uOld_)
+      : static_cast<const UList<vector2D>&>(U);
     if (!(w.nu > 0))
     {
-        w.Ustar = U;
+        w.Ustar = uOld;
         return;
     }
     const FixedList<const linearSolver*, 2> solvers
@@ -81,7 +103,7 @@ void Foam::SPH::implicitViscousPrediction::execute(const scalar dt)
     {
         lastSolve_ = step_.solve
         (
-            K, w.rho0, w.rho0*w.nu, dt, w.cloud.dr(), U, solvers, w.Ustar
+            K, w.rho0, w.rho0*w.nu, dt, w.cloud.dr(), uOld, solvers, w.Ustar
         );
     });
     for (direction d = 0; d < 2; ++d)
