@@ -131,16 +131,21 @@ void Foam::SPH::isph::addStages()
     const bool forces = !forces_.empty() || w.gPeriodic != vector2D::zero;
     if (implicitViscosity_)
     {
-        // The forces inside the implicit step (bodyForces.H)
+        // The forces and the last pressure's acceleration (with R) inside
+        // the implicit step (implicitViscousPrediction.H)
+        if (renormalised) stages_.add(new renormalisation(w));
         if (forces) stages_.add(new bodyForces(w, forces_, true));
-        stages_.add(new implicitViscousPrediction(w, solution_, forces));
+        stages_.add
+        (
+            new implicitViscousPrediction(w, solution_, forces, renormalised)
+        );
     }
     else
     {
         stages_.add(new viscousPrediction(w));
         if (forces) stages_.add(new bodyForces(w, forces_));
+        if (renormalised) stages_.add(new renormalisation(w));
     }
-    if (renormalised) stages_.add(new renormalisation(w));
     if (freeSurface_) stages_.add(new freeSurface(w, divRMax));
     pressure_ = &stages_.add
     (

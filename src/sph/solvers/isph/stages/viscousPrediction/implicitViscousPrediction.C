@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "implicitViscousPrediction.H"
+#include "projection.H"
 #include "kernelDispatch.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -26,19 +27,41 @@ const Foam::dictionary& Foam::SPH::implicitViscousPrediction::solverDict
 }
 
 
+void Foam::SPH::implicitViscousPrediction::setOldValues(const scalar dt)
+{
+    isphWork& w = work_;
+    const vector2DField& U = w.parts.field<vector2D>("U");
+    projection::pressureGradient(w, renormalised_, dtA_);
+    const vector2D g = w.g;
+    const scalar rho0 = w.rho0;
+    for (label i = 0; i < w.nFluid; ++i)
+    {
+        dtA_[i] = dt*(g - dtA_[i]/rho0);
+        uOld_[i] = (afterForces_ ? w.Ustar[i] : U[i]) + dtA_[i];
+    }
+    for (label i = w.nFluid; i < uOld_.size(); ++i)
+    {
+        uOld_[i] = U[i];
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::SPH::implicitViscousPrediction::implicitViscousPrediction
 (
     isphWork& work,
     const dictionary& solution,
-    const bool afterForces
+    const bool afterForces,
+    const bool renormalised
 )
 :
     stage
     (
         "viscousPrediction",
-        afterForces ? wordList({"U", "Ustar"}) : wordList({"U"}),
+        afterForces
+      ? wordList({"U", "p", "R", "Ustar"})
+      : wordList({"U", "p", "R"}),
         {"Ustar"},
         "viscous prediction"
     ),
@@ -53,8 +76,10 @@ Foam::SPH::implicitViscousPrediction::implicitViscousPrediction
         )
     ),
     afterForces_(afterForces),
+    renormalised_(renormalised),
+    dtA_(work.parts.size()),
     step_(work.nbrs, work.usaw, work.V, work.nFluid),
-    uOld_(afterForces ? work.parts.size() : 0),
+    uOld_(work.parts.size()),
     nIterations_(0)
 {}
 
@@ -65,36 +90,38 @@ void Foam::SPH::implicitViscousPrediction::describe(Ostream& os) const
 {
     const string indent("                        ");
     os  << "eqs. (15)-(17), (31), implicit (backward Euler): nu "
-        << work_.nu << (work_.nu > 0 ? "" : " (none)") << nl << indent.c_str();
+        << work_.nu << (work_.nu > 0 ? "" : " (none)") << ", on u^n + dt ("
+        << (afterForces_ ? "f + " : "") << "g - G{p^n}/rho), the last"
+        << " pressure's acceleration taken off again" << nl << indent.c_str();
     solverUx_->write(os);
+    os  << "; Uy alike";
 }
 
 
 void Foam::SPH::implicitViscousPrediction::execute(const scalar dt)
 {
     isphWork& w = work_;
-    const vector2DField& U = w.parts.field<vector2D>("U");
-    if (afterForces_)
-    {
-        // The fluid's u* of bodyForces, the vertices' wall velocity
-        for (label i = 0; i < w.nFluid; ++i)
-        {
-            uOld_[i] = w.Ustar[i];
-        }
-        for (label i = w.nFluid; i < uOld_.size(); ++i)
-        {
-            uOld_[i] = U[i];
-        }
-    }
-    const UList<vector2D>& uOld =
-        afterForces_
-      ? static_cast<const UList<vector2D>&>(uOld_)
-      : static_cast<const UList<vector2D>&>(U);
+    setOldValues(dt);
     if (!(w.nu > 0))
     {
-        w.Ustar = uOld;
-        return;
+        w.Ustar = uOld_;
     }
+    else
+    {
+        solve(dt);
+    }
+
+    // u** = w - dt a^n: the pressure is the projection's
+    for (label i = 0; i < w.nFluid; ++i)
+    {
+        w.Ustar[i] -= dtA_[i];
+    }
+}
+
+
+void Foam::SPH::implicitViscousPrediction::solve(const scalar dt)
+{
+    isphWork& w = work_;
     const FixedList<const linearSolver*, 2> solvers
     ({
         solverUx_.get(), solverUy_.get()
@@ -103,7 +130,7 @@ void Foam::SPH::implicitViscousPrediction::execute(const scalar dt)
     {
         lastSolve_ = step_.solve
         (
-            K, w.rho0, w.rho0*w.nu, dt, w.cloud.dr(), uOld, solvers, w.Ustar
+            K, w.rho0, w.rho0*w.nu, dt, w.cloud.dr(), uOld_, solvers, w.Ustar
         );
     });
     for (direction d = 0; d < 2; ++d)
