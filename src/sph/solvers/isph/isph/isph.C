@@ -80,6 +80,30 @@ bool Foam::SPH::isph::hasFreeSurface(const scalar divRMax)
 }
 
 
+void Foam::SPH::isph::addPrediction(const bool renormalised)
+{
+    isphWork& w = *work_;
+    const bool forces = !forces_.empty() || w.gPeriodic != vector2D::zero;
+    if (implicitViscosity_)
+    {
+        // The forces and the last pressure's acceleration (with R) inside
+        // the implicit step (implicitViscousPrediction.H)
+        if (renormalised) stages_.add(new renormalisation(w));
+        if (forces) stages_.add(new bodyForces(w, forces_, true));
+        stages_.add
+        (
+            new implicitViscousPrediction(w, solution_, forces, renormalised)
+        );
+    }
+    else
+    {
+        stages_.add(new viscousPrediction(w));
+        if (forces) stages_.add(new bodyForces(w, forces_));
+        if (renormalised) stages_.add(new renormalisation(w));
+    }
+}
+
+
 void Foam::SPH::isph::addStages()
 {
     const pressureGradientType gradient = pressureGradientTypeNames.getOrDefault
@@ -128,24 +152,7 @@ void Foam::SPH::isph::addStages()
     stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (30)"));
     if (moving) stages_.add(new moveWalls(w, runTime_, false));
     stages_.add(new usawNeighbours(w, ""));
-    const bool forces = !forces_.empty() || w.gPeriodic != vector2D::zero;
-    if (implicitViscosity_)
-    {
-        // The forces and the last pressure's acceleration (with R) inside
-        // the implicit step (implicitViscousPrediction.H)
-        if (renormalised) stages_.add(new renormalisation(w));
-        if (forces) stages_.add(new bodyForces(w, forces_, true));
-        stages_.add
-        (
-            new implicitViscousPrediction(w, solution_, forces, renormalised)
-        );
-    }
-    else
-    {
-        stages_.add(new viscousPrediction(w));
-        if (forces) stages_.add(new bodyForces(w, forces_));
-        if (renormalised) stages_.add(new renormalisation(w));
-    }
+    addPrediction(renormalised);
     if (freeSurface_) stages_.add(new freeSurface(w, divRMax));
     pressure_ = &stages_.add
     (
