@@ -9,6 +9,9 @@ Description
       (periodic in x, walls at y = 0 and D) at 10 particles across, driven
       by meanVelocityForce, whose controller state
       uniform/meanVelocityProperties is part of the restart;
+    - wcsphFoam on the same channel (WCSPH-USAW,
+      tutorials/periodic/poiseuille/wcsph) under meanVelocityForce, whose
+      controller is updated once per step after the Runge-Kutta update;
     - wcsphFoam on the Taylor-Green vortex of tutorials/periodic/taylorGreen
       (periodic in x and y, no walls) at 25^2, the vortex written per
       particle by its setTaylorGreen.
@@ -84,6 +87,28 @@ TEST(periodicRestart, isphPoiseuilleWithMeanVelocityForceIsExactToTheBit)
 
     const std::vector<std::string> files =
         sphTest::expectExactRestart("isphFoam", dir, "1", "0.5", "meanVelocityForce");
+    EXPECT_TRUE(has(files, "uniform/meanVelocityProperties"));
+}
+
+
+TEST(periodicRestart, wcsphPoiseuilleWithMeanVelocityForceIsExactToTheBit)
+{
+    // 10 particles across, WCSPH-USAW (c0 = 15 m/s): T = 1 s is about 380
+    // steps of the acoustic limit. The force of the step after the write
+    // is the controller's state of uniform/meanVelocityProperties
+    const fileName dir = copyTemplate
+    (
+        "poiseuille", "wcsph", "poiseuilleParameters", "periodicRestartPoiseuilleWcsph"
+    );
+    setEntry(dir/"system"/"poiseuilleParameters", "n", "10");
+    setEntry(dir/"system"/"poiseuilleParameters", "force", "meanVelocity");
+    std::string out;
+    ASSERT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
+
+    const std::vector<std::string> files = sphTest::expectExactRestart
+    (
+        "wcsphFoam", dir, "1", "0.5", "meanVelocity: meanVelocityForce, Ubar (1 0)"
+    );
     EXPECT_TRUE(has(files, "uniform/meanVelocityProperties"));
 }
 

@@ -293,3 +293,72 @@ TEST(sphMeshApplication, zeroLengthWallSegmentIsAnError)
     EXPECT_EQ(run(sphMeshExe + " -case " + dir, out), 1);
     EXPECT_NE(out.find("zero-length segment"), std::string::npos) << out;
 }
+
+
+TEST(sphMeshApplication, unknownBoundaryMethodListsTheValidOnes)
+{
+    // sphMesh lays the walls out through the wall model the solvers select
+    const fileName dir = makeMeshCase("sphMeshBadBoundaryMethod",
+        "dr 0.1;\n"
+        "fluid { w { type box; min (0 0); max (1 1); } }\n"
+        "walls { t { type box; min (0 0); max (2 2); } }\n");
+    sphTest::writeFile(dir/"system"/"sphSchemes",
+        "FoamFile { version 2.0; format ascii; class dictionary; object sphSchemes; }\n"
+        "kernel wendlandC2;\nboundaryMethod ghostParticles;\n");
+    std::string out;
+    EXPECT_EQ(run(sphMeshExe + " -case " + dir, out), 1);
+    EXPECT_NE(out.find("ghostParticles"), std::string::npos) << out;
+    EXPECT_NE(out.find("usaw"), std::string::npos) << out;
+    EXPECT_NE(out.find("dummyRepulsive"), std::string::npos) << out;
+    EXPECT_NE(out.find("sphSchemes"), std::string::npos) << out;
+}
+
+
+TEST(sphMeshApplication, wallModelDecidesTheLatticeAndTheDummies)
+{
+    // usaw: fluid on the nodes k dr, no dummies; dummyRepulsive: on the
+    // cell centres (k + 1/2) dr, dummies behind the walls
+    for (const std::string method : {"usaw", "dummyRepulsive"})
+    {
+        const fileName dir = makeMeshCase("sphMeshLayout" + method,
+            "dr 0.1;\n"
+            "fluid { w { type box; min (0 0); max (1 1); } }\n"
+            "walls { t { type box; min (0 0); max (1 1); } }\n");
+        sphTest::writeFile(dir/"system"/"sphSchemes",
+            "FoamFile { version 2.0; format ascii; class dictionary; object sphSchemes; }\n"
+            "kernel wendlandC2;\nhByDr 2;\nboundaryMethod " + method + ";\n");
+        std::string out;
+        ASSERT_EQ(run(sphMeshExe + " -case " + dir, out), 0) << out;
+        EXPECT_NE(out.find("Selecting wall model " + method), std::string::npos) << out;
+
+        auto runTime = sphTest::makeTime(dir);
+        const List<vector2D> fluid(readPositions(*runTime, "fluid"));
+        const bool usaw = method == "usaw";
+        // 9 x 9 interior nodes, or 10 x 10 cell centres
+        EXPECT_EQ(fluid.size(), usaw ? 81 : 100) << method;
+        const scalar offset = usaw ? 0.1 : 0.05;
+        scalar xMin = GREAT, yMin = GREAT;
+        for (const vector2D& p : fluid)
+        {
+            xMin = min(xMin, p.x());
+            yMin = min(yMin, p.y());
+        }
+        EXPECT_NEAR(xMin, offset, 1e-12) << method;
+        EXPECT_NEAR(yMin, offset, 1e-12) << method;
+        const bool dummies = isFile(dir/"constant"/"sphMesh"/"dummy"/"positions");
+        if (usaw)
+        {
+            EXPECT_TRUE(!dummies || readPositions(*runTime, "dummy").empty());
+        }
+        else
+        {
+            ASSERT_TRUE(dummies);
+            // 4 layers (Wendland, h = 2 dr) around a 1 x 1 box at dr 0.1:
+            // layer k is the square ring (k + 1/2) dr outside, 12 + 2k
+            // particles a side, 4 (11 + 2k) in all
+            label expected = 0;
+            for (label k = 0; k < 4; ++k) expected += 4*(10 + 2*k + 1);
+            EXPECT_EQ(readPositions(*runTime, "dummy").size(), expected);
+        }
+    }
+}

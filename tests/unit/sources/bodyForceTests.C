@@ -131,6 +131,42 @@ TEST(bodyForce, meanVelocityRestartsFromItsPropertiesFile)
 }
 
 
+TEST(bodyForce, forceIsTheLastUpdateWithoutUpdating)
+{
+    // wcsphFoam applies one force at the four Runge-Kutta stages and
+    // updates it once per step: force() must give the last update's value
+    // (the state read at start before the first) and change nothing, so
+    // that the next update is the one acceleration() alone would give.
+    // Exact: the same doubles are returned
+    auto runTime = sphTest::makeTime(caseWith("bodyForceForce", meanVelocity));
+    SPH::fvOptionForces forces(*runTime), reference(*runTime);
+    EXPECT_EQ(forces.force(), vector2D::zero);
+    List<vector2D> U(5, vector2D(0.3, 0)), URef(U);
+    for (label step = 0; step < 4; ++step)
+    {
+        const vector2D a = forces.acceleration(U, 0.01);
+        EXPECT_EQ(forces.force(), a);
+        EXPECT_EQ(forces.force(), a);
+        EXPECT_EQ(reference.acceleration(URef, 0.01), a);
+        for (label i = 0; i < U.size(); ++i)
+        {
+            U[i] += 0.01*(a - 2*U[i]);
+            URef[i] += 0.01*(a - 2*URef[i]);
+        }
+    }
+
+    const fileName dir = caseWith
+    (
+        "bodyForceForceConstant",
+        "f { type vectorSemiImplicitSource; selectionMode all;"
+        " volumeMode specific; injectionRateSuSp { U ((1.2 -0.5 0) 0); } }\n"
+    );
+    auto constantTime = sphTest::makeTime(dir);
+    SPH::fvOptionForces constant(*constantTime);
+    EXPECT_EQ(constant.force(), vector2D(1.2, -0.5));
+}
+
+
 TEST(bodyForce, badEntriesAreErrorsNamingThem)
 {
     sphTest::throwOnFatal();

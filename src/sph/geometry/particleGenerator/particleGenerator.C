@@ -28,7 +28,8 @@ Foam::scalar Foam::SPH::particleGenerator::readSpacing() const
 }
 
 
-bool Foam::SPH::particleGenerator::readUsaw(const Time& runTime)
+Foam::autoPtr<Foam::SPH::wallModel>
+Foam::SPH::particleGenerator::readWallModel(const Time& runTime)
 {
     const IOdictionary schemes
     (
@@ -42,7 +43,7 @@ bool Foam::SPH::particleGenerator::readUsaw(const Time& runTime)
             false
         )
     );
-    return schemes.getOrDefault<word>("boundaryMethod", word::null) == "usaw";
+    return wallModel::New(schemes);
 }
 
 
@@ -60,12 +61,10 @@ Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
         return n;
     }
 
-    // USAW walls (000_8c7cd3aabddcf18a.txt) are the vertices and segments
-    // alone: no particle behind them
-    if (usaw_)
+    if (!wallModel_->particlesBehindWalls())
     {
-        Info<< "No dummy particles: boundaryMethod usaw in system/sphSchemes"
-            << nl;
+        Info<< "No dummy particles: boundaryMethod " << wallModel_->type()
+            << " in system/sphSchemes" << nl;
         return 0;
     }
 
@@ -82,10 +81,8 @@ Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
         )
     );
 
-    // Layer k sits (k + 1/2) dr outside the wall and the first fluid
-    // particle dr/2 inside it: enough layers to fill its kernel support
     const autoPtr<kernel> k(kernel::New(schemes, dr_));
-    return max(label(1), label(std::floor(k->support()/dr_ + 1e-9)));
+    return wallModel_->defaultDummyLayers(*k, dr_);
 }
 
 
@@ -304,7 +301,7 @@ void Foam::SPH::particleGenerator::seedFluid
             wlo[d] = dom.min()[d];
         }
     }
-    const vector2D corner(usaw_ ? wlo - 0.5*vector2D(dr_, dr_) : wlo);
+    const vector2D corner(wallModel_->latticeCorner(wlo, dr_));
     const vector2D origin(dict_.getOrDefault<vector2D>("latticeOrigin", corner));
 
     // Lattice indices covering [lo, hi]; in a periodic direction exactly
@@ -391,7 +388,7 @@ Foam::SPH::particleGenerator::particleGenerator
         )
     ),
     dr_(readSpacing()),
-    usaw_(readUsaw(runTime))
+    wallModel_(readWallModel(runTime))
 {
     Info<< "Particle spacing dr = " << dr_ << nl;
 

@@ -61,6 +61,17 @@ Foam::vector2D Foam::SPH::fvOptionForces::acceleration
 }
 
 
+Foam::vector2D Foam::SPH::fvOptionForces::force() const
+{
+    vector2D a(Zero);
+    for (const bodyForce& f : *this)
+    {
+        a += f.force();
+    }
+    return a;
+}
+
+
 void Foam::SPH::fvOptionForces::checkDomain(const domain& dom) const
 {
     for (const bodyForce& f : *this) f.checkDomain(dom);

@@ -18,6 +18,7 @@
 #include "shifting.H"
 #include "wallDistance.H"
 #include "bodyForces.H"
+#include "usawWallModel.H"
 
 #include <cmath>
 
@@ -42,13 +43,6 @@ Foam::SPH::isph::pressureGradientTypeNames
 
 namespace
 {
-    // The walls' only method in ISPH-USAW
-    enum class boundaryMethod { usaw };
-    const Foam::Enum<boundaryMethod> boundaryMethodNames
-    ({
-        { boundaryMethod::usaw, "usaw" },
-    });
-
     // The viscous prediction, eq. (31): explicit (the paper) or implicit
     enum class viscousScheme { explicitEuler, implicitEuler };
     const Foam::Enum<viscousScheme> viscousSchemeNames
@@ -77,6 +71,28 @@ bool Foam::SPH::isph::hasFreeSurface(const scalar divRMax)
     nbrs_.build(cloud_->cells(), parts_.positions(), kernel_->support(), true);
     usaw_->update(parts_.positions());
     return freeSurface::countSurface(*work_, divRMax) > 0;
+}
+
+
+void Foam::SPH::isph::selectWallModel()
+{
+    // sphMesh's selection: the word decided where the fluid was seeded
+    if (!schemes_.found("boundaryMethod"))
+    {
+        FatalIOErrorInFunction(schemes_)
+            << "Missing entry boundaryMethod: isphFoam is ISPH-USAW and needs"
+            << " boundaryMethod usaw (set before sphMesh lays the particles)"
+            << exit(FatalIOError);
+    }
+    wallModel_ = wallModel::New(schemes_);
+    if (!isA<usawWallModel>(*wallModel_))
+    {
+        FatalIOErrorInFunction(schemes_.lookup("boundaryMethod"))
+            << "boundaryMethod " << wallModel_->type() << ": isphFoam is"
+            << " ISPH-USAW (Leroy et al. 2014) and takes usaw only; "
+            << wallModel_->type() << " is a wall model of wcsphFoam"
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -226,7 +242,7 @@ Foam::SPH::isph::isph(Time& runTime)
             << "Entry maxCo " << CCFL_ << ": expected C_CFL > 0"
             << exit(FatalIOError);
     }
-    boundaryMethodNames.get("boundaryMethod", schemes_);
+    selectWallModel();
     kernel_ = kernel::New(schemes_, dr_);
     walls_.reset(new wallMesh(runTime));
     motion_.reset(new wallBoundaries(runTime, *walls_));

@@ -41,13 +41,10 @@ void Foam::SPH::isph::readInitialVelocity()
 
 void Foam::SPH::isph::initialiseFromSphMesh()
 {
-    const List<vector2D>& vertices = walls_->points();
-    nFluid_ = sphCloud::layOut
-    (
-        runTime_, parts_, vertices,
-        labelList(vertices.size(), label(particleKind::wallVertex)),
-        walls_->pointPatch()
-    );
+    DynamicList<vector2D> wallX;
+    DynamicList<label> wallType, wallPatch;
+    wallModel_->wallParticles(runTime_, *walls_, wallX, wallType, wallPatch);
+    nFluid_ = sphCloud::layOut(runTime_, parts_, wallX, wallType, wallPatch);
     readInitialVelocity();
 }
 
@@ -66,15 +63,10 @@ void Foam::SPH::isph::initialise(const scalar rho0)
         Info<< "Restarting from " << parts_.path() << nl;
         parts_.read();
         nFluid_ = sphCloud::countFluid(parts_);
-        if (parts_.size() - nFluid_ != nVertices)
-        {
-            FatalErrorInFunction
-                << parts_.path() << " holds " << parts_.size() - nFluid_
-                << " wall particles after " << nFluid_ << " fluid ones, but"
-                << " constant/sphMesh/walls has " << nVertices << " vertices:"
-                << " the case was not made for ISPH-USAW (boundaryMethod usaw"
-                << " before sphMesh)" << exit(FatalError);
-        }
+        wallModel_->checkRestart
+        (
+            *walls_, parts_.path(), nFluid_, parts_.size() - nFluid_
+        );
     }
     else
     {
@@ -118,13 +110,17 @@ void Foam::SPH::isph::buildCloud()
     );
 
     // Vertex particles are fluid particles cut by the wall (000_...
-    // section 2): the share theta_v/(2 pi) of a particle's volume, so that
-    // with the first row dr from the wall the volumes tile the fluid
+    // section 2): their share theta_v/(2 pi) of a particle's volume, so
+    // that with the first row dr from the wall the volumes tile the fluid
     scalarList& V = work_->V;
     V = dr_*dr_;
-    forAll(walls_->pointAngles(), v)
+    const scalarList share
+    (
+        wallModel_->volumeShares(*walls_, V.size() - nFluid_)
+    );
+    forAll(share, v)
     {
-        V[nFluid_ + v] *= walls_->pointAngles()[v]/constant::mathematical::twoPi;
+        V[nFluid_ + v] *= share[v];
     }
     moveWalls::move(*work_, runTime_.value(), true);
 }

@@ -3,7 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wcsph.H"
-#include "fvOptionForces.H"
+#include "wcsphBodyForces.H"
 #include "memberStage.H"
 #include "OStringStream.H"
 #include "fluidProperties.H"
@@ -116,6 +116,7 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     walls_(new wallMesh(runTime)),
     parts_(runTime, runTime.timeName()),
     dr_(0),
+    bodyForces_(nullptr),
     nbrs_(true),
     skinByH_(0.2),
     skin_(0),
@@ -146,17 +147,6 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     kernel_ = kernel::New(schemes_, dr_);
     readSchemes();
 
-    // Body forces act in isphFoam's prediction only: refuse them here
-    // rather than run without them
-    const fvOptionForces forces(runTime);
-    if (!forces.empty())
-    {
-        FatalErrorInFunction
-            << runTime.constant()/"fvOptions" << " has the body force "
-            << forces.first().name() << ": wcsphFoam does not apply"
-            << " constant/fvOptions yet (isphFoam does); remove the file"
-            << " or run isphFoam" << exit(FatalError);
-    }
     wallModel_ = wcsphWallModel::New(runTime, schemes_, *walls_, *kernel_, work_);
     skin_ = skinByH_*kernel_->h();
     initialise();
@@ -176,7 +166,16 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     {
         crossing_.reset(new wallCrossing(*walls_, kernel_->support()));
     }
+    // Before the stage list prints gravity, after the step's own stages
+    autoPtr<wcsphBodyForces> forces
+    (
+        wcsphBodyForces::New(runTime, work_, *wallModel_, cloud_->dom())
+    );
     addStages();
+    if (forces)
+    {
+        bodyForces_ = &stages_.add(forces.release());
+    }
 }
 
 
@@ -299,6 +298,24 @@ void Foam::SPH::wcsph::afterStep(const scalar dt)
 }
 
 
+void Foam::SPH::wcsph::saveState(const particles::snapshot& start)
+{
+    if (bodyForces_) bodyForces_->save();
+}
+
+
+void Foam::SPH::wcsph::restoreState()
+{
+    if (bodyForces_) bodyForces_->restore();
+}
+
+
+void Foam::SPH::wcsph::writeState(Ostream& os) const
+{
+    if (bodyForces_) bodyForces_->write();
+}
+
+
 void Foam::SPH::wcsph::write() const
 {
     if (!vtk_)
@@ -358,6 +375,7 @@ void Foam::SPH::wcsph::printStep() const
         Info<< "Wall bounces since the last report: " << nBounced_ << nl;
     }
     nBounced_ = 0;
+    stages_.printStep(Info);
 }
 
 

@@ -10,6 +10,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "wcsph.H"
+#include "wcsphBodyForces.H"
 
 #include <chrono>
 
@@ -64,6 +65,10 @@ void Foam::SPH::wcsph::computeRates(const scalar t)
     }
 
     wallModel_->rates(t);
+    if (bodyForces_)
+    {
+        bodyForces_->addTo(work_.dUdt);
+    }
     rateExtremes();
     ratesCurrent_ = true;
     timeInteractions_ += std::chrono::duration<scalar>(clock::now() - searched).count();

@@ -61,34 +61,6 @@ Foam::SPH::wcsphDummyRepulsive::wcsphDummyRepulsive
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::SPH::wcsphDummyRepulsive::wallParticles
-(
-    DynamicList<vector2D>& x,
-    DynamicList<label>& type,
-    DynamicList<label>& patch
-) const
-{
-    particles dummy(runTime_, runTime_.constant(), "sphMesh/dummy", false);
-    dummy.add<label>("layer");
-    dummy.add<label>("patch");
-    dummy.read();
-    forAll(dummy.positions(), d)
-    {
-        x.append(dummy.positions()[d]);
-        type.append
-        (
-            label
-            (
-                dummy.field<label>("layer")[d] == 0
-              ? particleKind::interfacial
-              : particleKind::dummy
-            )
-        );
-        patch.append(dummy.field<label>("patch")[d]);
-    }
-}
-
-
 void Foam::SPH::wcsphDummyRepulsive::rates(const scalar t)
 {
     dispatch(kernel_, [&](const auto& W)

@@ -80,41 +80,6 @@ Foam::SPH::wcsphUsaw::wcsphUsaw
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::SPH::wcsphUsaw::wallParticles
-(
-    DynamicList<vector2D>& x,
-    DynamicList<label>& type,
-    DynamicList<label>& patch
-) const
-{
-    forAll(walls_.points(), v)
-    {
-        x.append(walls_.points()[v]);
-        type.append(label(particleKind::wallVertex));
-        patch.append(walls_.pointPatch()[v]);
-    }
-}
-
-
-void Foam::SPH::wcsphUsaw::checkRestart
-(
-    const fileName& path,
-    const label nFluid,
-    const label nWall
-) const
-{
-    if (nWall != walls_.points().size())
-    {
-        FatalErrorInFunction
-            << path << " holds " << nWall << " wall particles after " << nFluid
-            << " fluid ones, but constant/sphMesh/walls has "
-            << walls_.points().size() << " vertices: the case was not made"
-            << " for boundaryMethod usaw (set it before running sphMesh)"
-            << exit(FatalError);
-    }
-}
-
-
 void Foam::SPH::wcsphUsaw::initialWalls() const
 {
     wcsphWallModel::initialWalls();
@@ -135,13 +100,13 @@ void Foam::SPH::wcsphUsaw::setUp()
     usaw_.reset(new usawWalls(walls_, kernel_, w.nFluid, w.cloud->dom()));
 
     // Vertex particles are fluid particles cut by the wall (Leroy et al.
-    // 2014 section 2): the share theta_v/(2 pi) of a particle's mass
+    // 2014 section 2): their share of a particle's mass
     const label n = w.parts.size();
     mass_.setSize(n, w.mass());
-    forAll(walls_.pointAngles(), v)
+    const scalarList share(layout().volumeShares(walls_, n - w.nFluid));
+    forAll(share, v)
     {
-        mass_[w.nFluid + v] *=
-            walls_.pointAngles()[v]/constant::mathematical::twoPi;
+        mass_[w.nFluid + v] *= share[v];
     }
     V_.setSize(n);
     pTotal_.setSize(n);
@@ -179,6 +144,17 @@ void Foam::SPH::wcsphUsaw::rates(const scalar t)
         w.setSoundSpeeds();
         fluidRates(W);
     });
+}
+
+
+void Foam::SPH::wcsphUsaw::fluidVolumes(scalarList& V) const
+{
+    const scalarField& rho = work_.parts.field<scalar>("rho");
+    V.setSize(rho.size());
+    forAll(V, i)
+    {
+        V[i] = mass_[i]/rho[i];
+    }
 }
 
 

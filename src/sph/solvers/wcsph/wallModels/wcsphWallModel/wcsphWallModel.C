@@ -53,4 +53,16 @@ void Foam::SPH::wcsphWallModel::initialWalls() const
 }
 
 
+void Foam::SPH::wcsphWallModel::fluidVolumes(scalarList& V) const
+{
+    const scalarField& rho = work_.parts.field<scalar>("rho");
+    const scalar m = work_.mass();
+    V.setSize(rho.size());
+    forAll(V, i)
+    {
+        V[i] = i < work_.nFluid ? m/rho[i] : 0;
+    }
+}
+
+
 // ************************************************************************* //

@@ -15,12 +15,9 @@ Foam::autoPtr<Foam::SPH::wcsphWallModel> Foam::SPH::wcsphWallModel::New
     wcsphWork& work
 )
 {
-    const word modelType
-    (
-        schemes.getOrDefault<word>("boundaryMethod", "dummyRepulsive")
-    );
-
-    Info<< "Selecting wall model " << modelType << endl;
+    // The layout first: sphMesh's selection, and its list of valid words
+    autoPtr<wallModel> layout(wallModel::New(schemes));
+    const word& modelType = layout->type();
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
 
@@ -35,7 +32,12 @@ Foam::autoPtr<Foam::SPH::wcsphWallModel> Foam::SPH::wcsphWallModel::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<wcsphWallModel>(cstrIter()(runTime, schemes, walls, W, work));
+    autoPtr<wcsphWallModel> model
+    (
+        cstrIter()(runTime, schemes, walls, W, work)
+    );
+    model->layout_ = std::move(layout);
+    return model;
 }
 
 
