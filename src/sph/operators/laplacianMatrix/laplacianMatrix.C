@@ -29,7 +29,11 @@ Foam::SPH::laplacianMatrix::laplacianMatrix
     copyFrom_(V.size(), label(-1)),
     dirichletValues_(V.size(), Zero),
     dirichletScale_(1),
-    wallFlux_(walls.segmentParticles().size(), Zero)
+    wallFlux_(walls.segmentParticles().size(), Zero),
+    Sp_(nullptr),
+    robinK_(nullptr),
+    robinG_(nullptr),
+    robinMinDistance_(0)
 {}
 
 
@@ -44,7 +48,10 @@ void Foam::SPH::laplacianMatrix::check(const scalarUList& S) const
      && kinds_.size() == n && copyFrom_.size() == n
      && dirichletValues_.size() == n
      && (B_ ? B_->size() : ones_.size()) == n && (!R_ || R_->size() == n)
-     && wallFlux_.size() == walls_.segmentParticles().size();
+     && wallFlux_.size() == walls_.segmentParticles().size()
+     && (!Sp_ || Sp_->size() == n)
+     && (!robinK_ || robinK_->size() == wallFlux_.size())
+     && (!robinG_ || robinG_->size() == wallFlux_.size());
     if (!nbrs_.storesGeometry() || !sizesFit)
     {
         FatalErrorInFunction
@@ -56,7 +63,10 @@ void Foam::SPH::laplacianMatrix::check(const scalarUList& S) const
             << dirichletValues_.size() << ", B " << (B_ ? B_->size() : ones_.size())
             << ", R " << (R_ ? R_->size() : n) << "; wall fluxes "
             << wallFlux_.size() << " for "
-            << walls_.segmentParticles().size() << " segments"
+            << walls_.segmentParticles().size() << " segments; Sp "
+            << (Sp_ ? Sp_->size() : n) << ", Robin k "
+            << (robinK_ ? robinK_->size() : wallFlux_.size()) << ", g "
+            << (robinG_ ? robinG_->size() : wallFlux_.size())
             << exit(FatalError);
     }
 }
@@ -75,6 +85,7 @@ Foam::SPH::laplacianMatrix::view(const scalarUList& S) const
     o.wOff = walls_.offsets().cdata();
     o.seg = walls_.segments().cdata();
     o.gradGammaAs = walls_.gradGammaAs().cdata();
+    o.dAs = walls_.distances().cdata();
     o.ends = walls_.segmentParticles().cdata();
     o.V = V_.cdata();
     o.B = B_ ? B_->cdata() : ones_.cdata();
@@ -84,6 +95,10 @@ Foam::SPH::laplacianMatrix::view(const scalarUList& S) const
     o.f = dirichletValues_.cdata();
     o.flux = wallFlux_.cdata();
     o.S = S.cdata();
+    o.Sp = Sp_ ? Sp_->cdata() : nullptr;
+    o.robinK = robinK_ ? robinK_->cdata() : nullptr;
+    o.robinG = robinG_ ? robinG_->cdata() : nullptr;
+    o.robinMinDistance = robinMinDistance_;
     o.s = dirichletScale_;
     o.diagonalFactor = diagonalFactor_;
     o.nFluid = nFluid_;
@@ -161,6 +176,32 @@ void Foam::SPH::laplacianMatrix::diagonalFactor(const scalar factor)
 void Foam::SPH::laplacianMatrix::dirichletScale(const scalar scale)
 {
     dirichletScale_ = scale;
+}
+
+
+void Foam::SPH::laplacianMatrix::implicitSource(const scalarUList& Sp)
+{
+    Sp_ = &Sp;
+}
+
+
+void Foam::SPH::laplacianMatrix::robinWalls
+(
+    const scalarUList& k,
+    const scalarUList& g,
+    const scalar dMin
+)
+{
+    if (!(dMin > 0))
+    {
+        FatalErrorInFunction
+            << "laplacianMatrix::robinWalls: the least wall distance " << dMin
+            << " must be > 0 (the wall gradient divides by it)"
+            << exit(FatalError);
+    }
+    robinK_ = &k;
+    robinG_ = &g;
+    robinMinDistance_ = dMin;
 }
 
 

@@ -86,6 +86,17 @@ inline void Foam::SPH::laplacianMatrix::wallTerms
         const scalar Bs = 0.5*(o.B[e.first()] + o.B[e.second()]);
         const scalar Bw = own ? Bs : Bs + o.B[i];
         r.b -= Bw*invGamma*o.flux[o.seg[k]]*mag(o.gradGammaAs[k]);
+
+        // Robin: dphi/dn_as = (k_s phi_a - g_s)/max(d_as, d_min)
+        if (o.robinK)
+        {
+            const label s = o.seg[k];
+            const scalar w =
+                Bw*invGamma*mag(o.gradGammaAs[k])
+               /max(o.dAs[k], o.robinMinDistance);
+            r.robinDiag += w*o.robinK[s];
+            r.b += w*o.robinG[s];
+        }
     }
 }
 
@@ -99,7 +110,7 @@ inline Foam::scalar Foam::SPH::laplacianMatrix::equationRow
     matrixRow& row
 )
 {
-    rowBuilder r{o, row, 0, 0};
+    rowBuilder r{o, row, 0, 0, 0};
     const scalar invGamma = 1/o.gamma[i];
     const bool sources = o.kind[i] == interior;
 
@@ -122,7 +133,12 @@ inline Foam::scalar Foam::SPH::laplacianMatrix::equationRow
         r.b -= o.S[i];
         wallTerms(i, invGamma, own, q, r);
     }
-    row.emplace_back(i, o.diagonalFactor*r.diag);
+    scalar diag = o.diagonalFactor*r.diag;
+    if (sources && (o.Sp || o.robinK))
+    {
+        diag += r.robinDiag - (o.Sp ? o.Sp[i] : 0);
+    }
+    row.emplace_back(i, diag);
     return r.b;
 }
 

@@ -10,6 +10,7 @@
 #include "moveWalls.H"
 #include "usawNeighbours.H"
 #include "viscousPrediction.H"
+#include "implicitViscousPrediction.H"
 #include "renormalisation.H"
 #include "freeSurface.H"
 #include "pressurePoisson.H"
@@ -38,6 +39,18 @@ Foam::SPH::isph::pressureGradientTypeNames
     { pressureGradientType::antisymmetric, "antisymmetric" },
     { pressureGradientType::renormalised, "renormalised" },
 });
+
+
+namespace
+{
+    // The viscous prediction, eq. (31): explicit (the paper) or implicit
+    enum class viscousScheme { explicitEuler, implicitEuler };
+    const Foam::Enum<viscousScheme> viscousSchemeNames
+    ({
+        { viscousScheme::explicitEuler, "explicit" },
+        { viscousScheme::implicitEuler, "implicit" },
+    });
+}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -83,6 +96,30 @@ void Foam::SPH::isph::selectWallModel()
 }
 
 
+void Foam::SPH::isph::addPrediction(const bool renormalised)
+{
+    isphWork& w = *work_;
+    const bool forces = !forces_.empty() || w.gPeriodic != vector2D::zero;
+    if (implicitViscosity_)
+    {
+        // The forces and the last pressure's acceleration (with R) inside
+        // the implicit step (implicitViscousPrediction.H)
+        if (renormalised) stages_.add(new renormalisation(w));
+        if (forces) stages_.add(new bodyForces(w, forces_, true));
+        stages_.add
+        (
+            new implicitViscousPrediction(w, solution_, forces, renormalised)
+        );
+    }
+    else
+    {
+        stages_.add(new viscousPrediction(w));
+        if (forces) stages_.add(new bodyForces(w, forces_));
+        if (renormalised) stages_.add(new renormalisation(w));
+    }
+}
+
+
 void Foam::SPH::isph::addStages()
 {
     const pressureGradientType gradient = pressureGradientTypeNames.getOrDefault
@@ -120,6 +157,10 @@ void Foam::SPH::isph::addStages()
             << exit(FatalIOError);
     }
     freeSurface_ = hasFreeSurface(divRMax);
+    implicitViscosity_ = viscousSchemeNames.getOrDefault
+    (
+        "viscousScheme", schemes_, viscousScheme::explicitEuler
+    ) == viscousScheme::implicitEuler;
 
     // 000_... section 3.2, eqs. (30)-(38)
     isphWork& w = *work_;
@@ -127,12 +168,7 @@ void Foam::SPH::isph::addStages()
     stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (30)"));
     if (moving) stages_.add(new moveWalls(w, runTime_, false));
     stages_.add(new usawNeighbours(w, ""));
-    stages_.add(new viscousPrediction(w));
-    if (!forces_.empty() || w.gPeriodic != vector2D::zero)
-    {
-        stages_.add(new bodyForces(w, forces_));
-    }
-    if (renormalised) stages_.add(new renormalisation(w));
+    addPrediction(renormalised);
     if (freeSurface_) stages_.add(new freeSurface(w, divRMax));
     pressure_ = &stages_.add
     (
@@ -191,6 +227,7 @@ Foam::SPH::isph::isph(Time& runTime)
     nbrs_(true),
     forces_(runTime),
     freeSurface_(false),
+    implicitViscosity_(false),
     pressure_(nullptr),
     wallDistance_(nullptr),
     maxSpeed_(0),
@@ -224,9 +261,17 @@ void Foam::SPH::isph::printSettings() const
 {
     const bool adjust =
         runTime_.controlDict().getOrDefault<bool>("adjustTimeStep", false);
-    Info<< "    time step           eqs. (48)-(49): C_CFL (maxCo) " << CCFL_
-        << ", C_visq " << Cvisc_ << ", C_force " << Cforce_
-        << (freeSurface_ ? " with |du/dt| >= |g|" : "")
+    Info<< "    time step           eqs. (48)-(49): C_CFL (maxCo) " << CCFL_;
+    if (implicitViscosity_)
+    {
+        Info<< ", C_force " << Cforce_ << " (viscosity implicit: no C_visq"
+            << " h^2/nu bound)";
+    }
+    else
+    {
+        Info<< ", C_visq " << Cvisc_ << ", C_force " << Cforce_;
+    }
+    Info<< (freeSurface_ ? " with |du/dt| >= |g|" : "")
         << (adjust ? "" : " (adjustTimeStep off: deltaT fixed)") << nl;
 }
 
@@ -254,7 +299,7 @@ Foam::scalar Foam::SPH::isph::maxDeltaT() const
     {
         dt = CCFL_*h/std::sqrt(uMax2);
     }
-    if (nu > 0)
+    if (nu > 0 && !implicitViscosity_)
     {
         dt = min(dt, Cvisc_*h*h/nu);
     }

@@ -8,21 +8,32 @@
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::SPH::projection::execute(const scalar dt)
+void Foam::SPH::projection::pressureGradient
+(
+    const isphWork& w,
+    const bool renormalised,
+    UList<vector2D>& gradP
+)
 {
-    isphWork& w = work_;
     const scalarField& p = w.parts.field<scalar>("p");
     dispatch(w.W, [&](const auto& K)
     {
-        if (renormalised_)
+        if (renormalised)
         {
-            usaw::gradMinus(K, w.nbrs, w.usaw, w.V, w.R, p, gradP_);
+            usaw::gradMinus(K, w.nbrs, w.usaw, w.V, w.R, p, gradP);
         }
         else
         {
-            usaw::gradPlus(K, w.nbrs, w.usaw, w.V, p, gradP_);
+            usaw::gradPlus(K, w.nbrs, w.usaw, w.V, p, gradP);
         }
     });
+}
+
+
+void Foam::SPH::projection::execute(const scalar dt)
+{
+    isphWork& w = work_;
+    pressureGradient(w, renormalised_, gradP_);
 
     vector2D* U = w.parts.field<vector2D>("U").data();
     const vector2D g = w.g;
