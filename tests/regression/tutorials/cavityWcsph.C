@@ -7,9 +7,9 @@ Description
     and cells, the FV reference at 32^2, each to the FV steady time): one
     Allrun gives the three rows of the table and the pictures.
 
-    Figures: at 16^2 WCSPH-USAW (c0 = 10 U, background pressure) was
-    measured at max |u - u_Ghia| = 0.070 U, max |v - v_Ghia| = 0.013 U and
-    L2 (66) = 0.134 against FV 32^2 (ISPH-USAW: 0.055, 0.049 and 0.051).
+    Figures: at 16^2 WCSPH-USAW (c0 = 10 U, background pressure b0) was
+    measured at max |u - u_Ghia| = 0.064 U, max |v - v_Ghia| = 0.089 U and
+    L2 (66) = 0.060 against FV 32^2 (ISPH-USAW: 0.055, 0.049 and 0.051).
     The bounds, 0.1 U from Ghia and L2 below 0.2, are those of a flow that
     has the cavity's vortex at 16 particles a side: without the moving lid
     (the wall model's sliding-wall velocity) the centrelines are zero, an
