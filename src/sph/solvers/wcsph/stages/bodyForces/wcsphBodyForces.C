@@ -38,11 +38,7 @@ Foam::autoPtr<Foam::SPH::wcsphBodyForces> Foam::SPH::wcsphBodyForces::New
     autoPtr<fvOptionForces> forces(new fvOptionForces(runTime));
     forces->checkDomain(dom);
 
-    vector2D gAcross(work.g);
-    for (direction d = 0; d < 2; ++d)
-    {
-        if (dom.periodic(d)) gAcross[d] = 0;
-    }
+    const vector2D gAcross(dom.acrossPeriods(work.g));
     const vector2D gPeriodic(work.g - gAcross);
     if (forces->empty() && gPeriodic == vector2D::zero)
     {
