@@ -4,6 +4,7 @@
 
 #include "vtkAtomicFile.H"
 #include "OSspecific.H"
+#include "fileSync.H"
 #include "error.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -92,6 +93,12 @@ void Foam::SPH::vtkAtomicFile::commit()
     if (!isFile(tmp_))
     {
         fail("the temporary file " + tmp_ + " was not written");
+    }
+
+    // On disk before the rename, or a crash could leave an empty file
+    if (!fileSync::sync(tmp_))
+    {
+        fail("syncing " + tmp_ + " failed: " + fileSync::lastError());
     }
 
     // rename() replaces an existing file in one step (POSIX), which is the

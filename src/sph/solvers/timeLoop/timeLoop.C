@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "timeLoop.H"
+#include "timeClock.H"
+#include "atomicTimeDirectory.H"
 #include "wallCrossing.H"
 #include "IOdictionary.H"
 #include "OFstream.H"
@@ -21,7 +23,9 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     minDeltaTFraction_(1e-3),
     deltaT0_(-1),
     lastDeltaT_(-1),
-    lastDeltaTStart_(-1)
+    lastDeltaTStart_(-1),
+    timeStart_(runTime.value()),
+    purgeWrite_(timeClock::takeOverPurgeWrite(runTime))
 {
     const IOdictionary schemes
     (
@@ -47,20 +51,29 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
 
 void Foam::SPH::timeLoop::readState()
 {
-    const IOdictionary state
+    const IOobject io
     (
-        IOobject
-        (
-            solver_.stateName(), runTime_.timeName(), "uniform", runTime_,
-            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
-        )
+        solver_.stateName(), runTime_.timeName(), "uniform", runTime_,
+        IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
     );
+    if (timeClock::isWrittenState(runTime_.timePath()) && !isFile(io.objectPath()))
+    {
+        FatalErrorInFunction
+            << "Cannot restart from time " << runTime_.timeName() << ": "
+            << io.objectPath() << " is missing" << nl
+            << "    (the solver's state and clock; a run killed while"
+            << " writing, another solver's time directory, or a damaged"
+            << " copy)" << exit(FatalError);
+    }
+    const IOdictionary state(io);
     lastDeltaT_ = state.getOrDefault<scalar>("deltaT", -1);
+    timeClock::restore(runTime_, state);
+    timeStart_ = runTime_.value();
     solver_.readState(state);
 }
 
 
-void Foam::SPH::timeLoop::writeState() const
+bool Foam::SPH::timeLoop::writeState() const
 {
     // Seventeen digits give the doubles back exactly
     const fileName dir(runTime_.timePath()/"uniform");
@@ -73,7 +86,43 @@ void Foam::SPH::timeLoop::writeState() const
     ).writeHeader(os, "dictionary");
     solver_.writeState(os);
     os.writeEntry("deltaT", lastDeltaT_);
+    timeClock::write(os, runTime_);
     IOobject::writeEndDivider(os);
+    return os.good();
+}
+
+
+void Foam::SPH::timeLoop::writeTime()
+{
+    {
+        atomicTimeDirectory dir(runTime_);
+        dir.check(runTime_.writeNow(), "writing the particle fields failed");
+        dir.check
+        (
+            writeState(), "writing uniform/" + solver_.stateName() + " failed"
+        );
+        dir.commit();
+    }
+    if (written_.empty() || written_.last() != runTime_.timeName())
+    {
+        written_.append(runTime_.timeName());
+    }
+    purge();
+    solver_.write();
+}
+
+
+void Foam::SPH::timeLoop::purge()
+{
+    if (purgeWrite_ <= 0)
+    {
+        return;
+    }
+    while (written_.size() > purgeWrite_)
+    {
+        rmDir(runTime_.path()/written_.first());
+        written_.remove(0);
+    }
 }
 
 
@@ -193,10 +242,8 @@ void Foam::SPH::timeLoop::fail
         solver_.restoreState();
         lastDeltaT_ = lastDeltaTStart_;
     }
-    runTime_.setTime(runTime_.value() - runTime_.deltaTValue(), runTime_.timeIndex() - 1);
-    runTime_.writeNow();
-    solver_.write();
-    writeState();
+    runTime_.setTime(timeStart_, runTime_.timeIndex() - 1);
+    writeTime();
 
     FatalErrorInFunction
         << what.c_str() << where.c_str() << nl
@@ -263,6 +310,22 @@ void Foam::SPH::timeLoop::switchOffFpe()
 }
 
 
+void Foam::SPH::timeLoop::prepareStart(Time& runTime, const word& stateName)
+{
+    atomicTimeDirectory::removeUnfinished(runTime);
+    timeClock::selectStart(runTime);
+    const IOdictionary state
+    (
+        IOobject
+        (
+            stateName, runTime.timeName(), "uniform", runTime,
+            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+        )
+    );
+    timeClock::restore(runTime, state);
+}
+
+
 void Foam::SPH::timeLoop::run()
 {
     Info<< solver_.title().c_str() << ", stages of each time step:" << nl;
@@ -291,6 +354,7 @@ void Foam::SPH::timeLoop::run()
         {
             runTime_.setDeltaT(nextDeltaT());
         }
+        timeStart_ = runTime_.value();
         ++runTime_;
 
         const bool log =
@@ -303,11 +367,9 @@ void Foam::SPH::timeLoop::run()
 
         step();
 
-        runTime_.write();
         if (runTime_.writeTime())
         {
-            solver_.write();
-            writeState();
+            writeTime();
         }
 
         if (log)

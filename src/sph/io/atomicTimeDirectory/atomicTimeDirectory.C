@@ -1,0 +1,141 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "atomicTimeDirectory.H"
+#include "fileSync.H"
+#include "OSspecific.H"
+
+#include <cstdio>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::word Foam::SPH::atomicTimeDirectory::suffix(".writing");
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::atomicTimeDirectory::restoreCase()
+{
+    runTime_.caseName() = caseName_;
+}
+
+
+void Foam::SPH::atomicTimeDirectory::fail(const std::string& what)
+{
+    restoreCase();
+    rmDir(staging_, true);
+    committed_ = true;
+    FatalErrorInFunction
+        << "Cannot write the time directory " << final_ << nl
+        << "    " << what.c_str() << nl
+        << "    (a full disk or a folder that cannot be written?)."
+        << " Every earlier time directory is intact; nothing of time "
+        << name_ << " is left behind" << exit(FatalError);
+    std::abort();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::atomicTimeDirectory::atomicTimeDirectory(Time& runTime)
+:
+    runTime_(runTime),
+    caseName_(runTime.caseName()),
+    name_(runTime.timeName()),
+    final_(runTime.path()/name_),
+    staging_(runTime.path()/(name_ + suffix)),
+    committed_(false)
+{
+    if (exists(staging_, false))
+    {
+        rmDir(staging_, true) || rm(staging_);
+    }
+    if (!mkDir(staging_) || !isDir(staging_))
+    {
+        committed_ = true;
+        FatalErrorInFunction
+            << "Cannot write the time directory " << final_ << nl
+            << "    because the folder " << staging_
+            << " cannot be made: " << fileSync::lastError().c_str() << nl
+            << "    Every earlier time directory is intact"
+            << exit(FatalError);
+    }
+    runTime_.caseName() = caseName_/(name_ + suffix);
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::SPH::atomicTimeDirectory::~atomicTimeDirectory()
+{
+    if (!committed_)
+    {
+        restoreCase();
+        rmDir(staging_, true);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::atomicTimeDirectory::check
+(
+    const bool ok,
+    const std::string& what
+)
+{
+    if (!ok)
+    {
+        fail(what);
+    }
+}
+
+
+void Foam::SPH::atomicTimeDirectory::commit()
+{
+    restoreCase();
+    const fileName written(staging_/name_);
+    if (!isDir(written) || !fileSync::syncTree(written))
+    {
+        fail("syncing " + written + " failed: " + fileSync::lastError());
+    }
+    if (isDir(final_))
+    {
+        // Written before (the last good state at its own write time): swap
+        // in one step; the old one goes with the .writing folder
+        if (!fileSync::exchange(written, final_))
+        {
+            fail("replacing it failed: " + fileSync::lastError());
+        }
+    }
+    else if (::rename(written.c_str(), final_.c_str()) != 0)
+    {
+        fail("renaming " + written + " to it failed: " + fileSync::lastError());
+    }
+    fileSync::sync(runTime_.path());
+    committed_ = true;
+    rmDir(staging_, true);
+}
+
+
+void Foam::SPH::atomicTimeDirectory::removeUnfinished(const Time& runTime)
+{
+    for
+    (
+        const fileName& d
+      : readDir(runTime.path(), fileName::DIRECTORY, false, false)
+    )
+    {
+        if (d.hasExt() && ("." + d.ext()) == suffix)
+        {
+            Info<< "Removing " << runTime.path()/d << ": an unfinished write"
+                << " of time " << d.lessExt()
+                << " (a run stopped while writing it)" << nl;
+            rmDir(runTime.path()/d, true);
+        }
+    }
+}
+
+
+// ************************************************************************* //

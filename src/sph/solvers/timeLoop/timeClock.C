@@ -1,0 +1,171 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "timeClock.H"
+#include "IOdictionary.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- Time keeps its clock protected; a derived class may name the members
+//- (pointers to members of Time), which is all the access needed
+class clockAccess
+:
+    public Time
+{
+public:
+
+    static scalar Time::* startTimeMember() { return &clockAccess::startTime_; }
+    static label Time::* startTimeIndexMember()
+    {
+        return &clockAccess::startTimeIndex_;
+    }
+    static scalar Time::* writeIntervalMember()
+    {
+        return &clockAccess::writeInterval_;
+    }
+    static label TimeState::* writeTimeIndexMember()
+    {
+        return &clockAccess::writeTimeIndex_;
+    }
+    static label Time::* purgeWriteMember() { return &clockAccess::purgeWrite_; }
+};
+
+
+//- Move the clock to a time directory: its time, its index
+void startAt(Time& runTime, const instant& t)
+{
+    const IOdictionary timeDict
+    (
+        IOobject
+        (
+            "time", t.name(), "uniform", runTime,
+            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+        )
+    );
+    const label index = timeDict.getOrDefault<label>("index", 0);
+    runTime.setTime(t, index);
+    runTime.*clockAccess::startTimeMember() = t.value();
+    runTime.*clockAccess::startTimeIndexMember() = index;
+    runTime.*clockAccess::writeTimeIndexMember() = 0;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+bool Foam::SPH::timeClock::isWrittenState(const fileName& dir)
+{
+    return isDir(dir/"uniform") || isDir(dir/"lagrangian");
+}
+
+
+Foam::fileName Foam::SPH::timeClock::positionsFile(const fileName& timeDir)
+{
+    return timeDir/"lagrangian"/"sph"/"positions";
+}
+
+
+void Foam::SPH::timeClock::write(Ostream& os, const Time& runTime)
+{
+    os.writeEntry("time", runTime.value());
+    os.writeEntry("timeIndex", runTime.timeIndex());
+    os.writeEntry("writeTimeOrigin", runTime.*clockAccess::startTimeMember());
+    os.writeEntry("writeTimeIndex", runTime.*clockAccess::writeTimeIndexMember());
+    os.writeEntry("writeInterval", runTime.*clockAccess::writeIntervalMember());
+}
+
+
+void Foam::SPH::timeClock::restore(Time& runTime, const dictionary& dict)
+{
+    scalar t = 0;
+    if (!dict.readIfPresent("time", t))
+    {
+        return;
+    }
+    runTime.setTime(t, dict.get<label>("timeIndex"));
+
+    if (dict.get<scalar>("writeInterval") == runTime.*clockAccess::writeIntervalMember())
+    {
+        runTime.*clockAccess::startTimeMember() = dict.get<scalar>("writeTimeOrigin");
+        runTime.*clockAccess::writeTimeIndexMember() = dict.get<label>("writeTimeIndex");
+    }
+    else
+    {
+        Info<< "The writeInterval changed: write times counted from the"
+            << " restart time " << runTime.timeName() << nl;
+        runTime.*clockAccess::startTimeMember() = t;
+        runTime.*clockAccess::writeTimeIndexMember() = 0;
+    }
+}
+
+
+Foam::label Foam::SPH::timeClock::takeOverPurgeWrite(Time& runTime)
+{
+    const label n = runTime.*clockAccess::purgeWriteMember();
+    runTime.*clockAccess::purgeWriteMember() = 0;
+    return n;
+}
+
+
+void Foam::SPH::timeClock::selectStart(Time& runTime)
+{
+    const fileName dir(runTime.timePath());
+    if (!isWrittenState(dir) || isFile(positionsFile(dir)))
+    {
+        return;
+    }
+
+    const dictionary& control = runTime.controlDict();
+    const bool latest =
+        control.getOrDefault<word>("startFrom", "latestTime") == "latestTime";
+    if (!(latest && control.getOrDefault<bool>("skipIncompleteTimes", false)))
+    {
+        FatalIOErrorInFunction(control)
+            << "The start time directory " << dir << " is incomplete: it has"
+            << " no " << positionsFile(dir).relative(dir) << nl
+            << "    (a run killed while writing it, or a damaged copy)."
+            << " Remove it, or set" << nl
+            << "    skipIncompleteTimes yes; (with startFrom latestTime) in "
+            << control.name() << " to start" << nl
+            << "    from the latest complete time before it"
+            << exit(FatalIOError);
+    }
+
+    const instantList times(runTime.times());
+    for (label i = times.size() - 1; i >= 0; --i)
+    {
+        const instant& t = times[i];
+        if (t.name() == runTime.constant() || t.value() > runTime.value())
+        {
+            continue;
+        }
+        const fileName tDir(runTime.path()/t.name());
+        if (isWrittenState(tDir) && !isFile(positionsFile(tDir)))
+        {
+            WarningInFunction
+                << "Skipping the incomplete time directory " << tDir
+                << " (no " << positionsFile(tDir).relative(tDir)
+                << "; skipIncompleteTimes yes)" << endl;
+            continue;
+        }
+        startAt(runTime, t);
+        WarningInFunction
+            << "Starting from time " << t.name() << ", the latest complete"
+            << " time directory" << endl;
+        return;
+    }
+    FatalIOErrorInFunction(control)
+        << "No complete time directory to start from in " << runTime.path()
+        << exit(FatalIOError);
+}
+
+
+// ************************************************************************* //
