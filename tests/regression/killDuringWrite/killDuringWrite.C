@@ -25,7 +25,8 @@ namespace
     const std::string bin = std::string(SPHFOAM_BINARY_DIR) + "/applications/";
     const std::string tutorials = std::string(SPHFOAM_SOURCE_DIR) + "/tutorials/";
 
-    //- The tank of the solver, meshed, writing every step to a long end
+    //- The tank of the solver, coarse, meshed, writing every step to a
+    //- long end
     fileName tank(const std::string& app, const std::string& name)
     {
         const fileName dir =
@@ -36,6 +37,9 @@ namespace
         const std::string from =
             app == "isphFoam" ? "isph/hydrostaticTank" : "wcsph/hydrostaticTank";
         EXPECT_EQ(run("cp -r " + tutorials + from + " " + dir, out), 0) << out;
+        // 200 fluid particles: a write is most of a step, so kills land in
+        // writes
+        setEntry(dir/"system"/"sphMeshDict", "dr", "0.05");
         EXPECT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
         const fileName controlDict(dir/"system"/"controlDict");
         setEntry(controlDict, "writeControl", "timeStep");
@@ -84,15 +88,26 @@ TEST(killDuringWrite, everyTimeLeftIsCompleteAndTheLatestRestarts)
         const fileName dir = tank(app, "kill_" + app);
         const std::string exe = "env OMP_NUM_THREADS=1 " + bin + app + " -case " + dir;
 
-        // Kill at staggered moments (start-up takes a few tenths of a
-        // second; then a write every step of a few milliseconds)
+        // Kill at staggered moments once the time loop runs (a write
+        // every step of a few milliseconds), however busy the machine
         std::string out;
         label unfinished = 0;
         for (int k = 0; k < 12; ++k)
         {
-            const std::string delay = std::to_string(0.45 + 0.037*k);
-            const int status = run("timeout -s KILL " + delay + " " + exe, out);
-            EXPECT_EQ(status, 137) << "run " << k << " was not killed" << out;
+            const fileName log(dir/"log.kill");
+            const std::string delay = std::to_string(0.01 + 0.013*k);
+            run
+            (
+                exe + " > " + log + " 2>&1 & pid=$!;"
+                " for i in $(seq 1200); do"
+                " grep -q 'Starting time loop' " + log + " && break; sleep 0.05;"
+                " done; sleep " + delay + "; kill -9 $pid; wait $pid; echo $? > "
+              + dir/"status.kill",
+                out
+            );
+            const std::string status = run("cat " + dir/"status.kill");
+            EXPECT_EQ(status, "137\n")
+                << "run " << k << " was not killed: " << run("tail -30 " + log);
             if (!unfinishedWrites(dir).empty()) ++unfinished;
 
             for (const std::string& t : sphTest::timeDirs(dir))

@@ -7,6 +7,7 @@
 #include "OSspecific.H"
 
 #include <cstdio>
+#include <sys/statvfs.h>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -26,10 +27,18 @@ void Foam::SPH::atomicTimeDirectory::fail(const std::string& what)
     restoreCase();
     rmDir(staging_, true);
     committed_ = true;
+
+    struct statvfs fs;
+    const bool full =
+        ::statvfs(runTime_.path().c_str(), &fs) == 0 && fs.f_bavail == 0;
     FatalErrorInFunction
         << "Cannot write the time directory " << final_ << nl
         << "    " << what.c_str() << nl
-        << "    (a full disk or a folder that cannot be written?)."
+        << (
+               full
+             ? "    The disk holding the case is full."
+             : "    (a full disk or a folder that cannot be written?)"
+           )
         << " Every earlier time directory is intact; nothing of time "
         << name_ << " is left behind" << exit(FatalError);
     std::abort();
@@ -79,15 +88,33 @@ Foam::SPH::atomicTimeDirectory::~atomicTimeDirectory()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::SPH::atomicTimeDirectory::check
+void Foam::SPH::atomicTimeDirectory::write
 (
-    const bool ok,
+    const std::function<bool()>& writer,
     const std::string& what
 )
 {
-    if (!ok)
+    // A stream that fails stops OpenFOAM with a FatalIOError, which would
+    // exit with the .writing folder left: catch it here instead
+    const bool throwing = FatalError.throwExceptions(true);
+    const bool throwingIO = FatalIOError.throwExceptions(true);
+    std::string failure;
+    try
     {
-        fail(what);
+        if (!writer())
+        {
+            failure = what;
+        }
+    }
+    catch (const Foam::error& e)
+    {
+        failure = what + ": " + e.message();
+    }
+    FatalError.throwExceptions(throwing);
+    FatalIOError.throwExceptions(throwingIO);
+    if (!failure.empty())
+    {
+        fail(failure);
     }
 }
 

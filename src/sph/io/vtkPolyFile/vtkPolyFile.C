@@ -18,6 +18,8 @@
 #include <vtkXMLPolyDataWriter.h>
 
 #include "vtkPolyFile.H"
+
+#include <cstring>
 #include "vtkAtomicFile.H"
 #include "error.H"
 
@@ -126,9 +128,16 @@ std::string writeFailure(const unsigned long code)
         case vtkErrorCode::CannotOpenFileError:
             return "vtkXMLPolyDataWriter could not open the temporary file";
         default:
+            // Below VTK's own codes (FirstVTKErrorCode), a system
+            // errno: 28 is a full disk
             return
-                "vtkXMLPolyDataWriter failed with VTK error code "
-              + std::to_string(code);
+                "vtkXMLPolyDataWriter failed with error code "
+              + std::to_string(code)
+              + (
+                    code < vtkErrorCode::FirstVTKErrorCode
+                  ? " (" + std::string(std::strerror(int(code))) + ")"
+                  : std::string()
+                );
     }
 }
 

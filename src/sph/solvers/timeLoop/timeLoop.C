@@ -96,10 +96,15 @@ void Foam::SPH::timeLoop::writeTime()
 {
     {
         atomicTimeDirectory dir(runTime_);
-        dir.check(runTime_.writeNow(), "writing the particle fields failed");
-        dir.check
+        dir.write
         (
-            writeState(), "writing uniform/" + solver_.stateName() + " failed"
+            [this]() { return runTime_.writeNow(); },
+            "writing the particle fields failed"
+        );
+        dir.write
+        (
+            [this]() { return writeState(); },
+            "writing uniform/" + solver_.stateName() + " failed"
         );
         dir.commit();
     }
