@@ -24,13 +24,15 @@ void Foam::SPH::atomicTimeDirectory::restoreCase()
 
 void Foam::SPH::atomicTimeDirectory::fail(const std::string& what)
 {
+    // Full before the partial write is removed (which frees its space)
+    struct statvfs fs;
+    const bool full =
+        ::statvfs(runTime_.path().c_str(), &fs) == 0
+     && fs.f_bavail*fs.f_frsize < 65536;
+
     restoreCase();
     rmDir(staging_, true);
     committed_ = true;
-
-    struct statvfs fs;
-    const bool full =
-        ::statvfs(runTime_.path().c_str(), &fs) == 0 && fs.f_bavail == 0;
     FatalErrorInFunction
         << "Cannot write the time directory " << final_ << nl
         << "    " << what.c_str() << nl
