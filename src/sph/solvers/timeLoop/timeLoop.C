@@ -23,6 +23,7 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     lastDeltaT_(-1),
     lastDeltaTStart_(-1)
 {
+    checkTimeControls(runTime);
     const IOdictionary schemes
     (
         IOobject

@@ -12,6 +12,7 @@ Description
 #include "Time.H"
 #include "OSspecific.H"
 #include "initialField.H"
+#include "particleChecks.H"
 
 #include <cmath>
 
@@ -125,6 +126,7 @@ void Foam::SPH::wcsph::initialise()
     {
         Info<< "Restarting from " << parts_.path() << nl;
         parts_.read();
+        checkRestartParticles(parts_, walls_->patchNames().size(), sphCloud::solverDomain(*walls_, kernel_->support()));
         const label nFluid = sphCloud::countFluid(parts_);
         work_.nFluid = nFluid;
         wallModel_->checkRestart(parts_.path(), nFluid, parts_.size() - nFluid);

@@ -1,0 +1,108 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "timeControls.H"
+#include "checkedEntry.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+
+    void checkWriteControls(const dictionary& dict)
+    {
+        const word control(dict.getOrDefault<word>("writeControl", "timeStep"));
+        if (!Time::writeControlNames.found(control))
+        {
+            FatalIOErrorInFunction(dict.lookup("writeControl"))
+                << "Entry writeControl " << control << ": expected one of "
+                << Time::writeControlNames.sortedToc() << exit(FatalIOError);
+        }
+        const word key(dict.found("writeInterval") ? "writeInterval" : "writeFrequency");
+        if (!dict.found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Missing entry writeInterval" << exit(FatalIOError);
+        }
+        const scalar interval = dict.get<scalar>(key);
+        if
+        (
+            Time::writeControlNames[control] == Time::wcTimeStep
+         && !(interval >= 1 && std::floor(interval) == interval)
+        )
+        {
+            FatalIOErrorInFunction(dict.lookup(key))
+                << "Entry " << key << " " << interval << ": expected a whole"
+                << " number of time steps >= 1 for writeControl timeStep"
+                << exit(FatalIOError);
+        }
+        SPH::checkNumber(dict, key, interval, {0, VGREAT, true});
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::checkTimeControls(const Time& runTime)
+{
+    const dictionary& dict = runTime.controlDict();
+
+    checkedScalar(dict, "deltaT", {0, VGREAT, true}, "s");
+
+    const word stopAt(dict.getOrDefault<word>("stopAt", "endTime"));
+    if (stopAt == "endTime" || dict.found("endTime"))
+    {
+        const scalar tEnd = checkedScalar(dict, "endTime", {-VGREAT, VGREAT});
+        const scalar tStart = runTime.value();
+        if (tEnd < tStart && stopAt == "endTime")
+        {
+            FatalIOErrorInFunction(dict.lookup("endTime"))
+                << "Entry endTime " << tEnd << ": before the start time "
+                << tStart << " (startFrom "
+                << dict.getOrDefault<word>("startFrom", "latestTime")
+                << "): expected endTime > " << tStart << exit(FatalIOError);
+        }
+        if (tEnd == tStart && stopAt == "endTime")
+        {
+            Info<< "endTime " << tEnd << " in " << dict.name()
+                << " is the start time: nothing to do" << nl << endl;
+        }
+    }
+
+    checkWriteControls(dict);
+
+    if
+    (
+        dict.getOrDefault<bool>("adjustTimeStep", false)
+     || dict.found("maxCo")
+    )
+    {
+        checkedScalar
+        (
+            dict, "maxCo", 0.2, {0, 1, true},
+            "the Courant number of the time step; above 1 a particle would"
+            " travel more than a smoothing length in a step"
+        );
+    }
+    if (dict.found("maxDeltaT"))
+    {
+        checkedScalar(dict, "maxDeltaT", {0, VGREAT, true}, "s");
+    }
+    if (dict.found("logInterval"))
+    {
+        const label n = dict.get<label>("logInterval");
+        if (n < 1)
+        {
+            FatalIOErrorInFunction(dict.lookup("logInterval"))
+                << "Entry logInterval " << n << ": expected a number of"
+                << " time steps >= 1" << exit(FatalIOError);
+        }
+    }
+}
+
+
+// ************************************************************************* //
