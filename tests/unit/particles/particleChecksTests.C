@@ -18,8 +18,8 @@ using namespace Foam;
 
 namespace
 {
-    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
-    const scalar inf = std::numeric_limits<scalar>::infinity();
+    const scalar NaN = std::numeric_limits<scalar>::quiet_NaN();
+    const scalar Inf = std::numeric_limits<scalar>::infinity();
 
     //- Four fluid particles, then two dummies of patch 0 and 1
     class particleChecks : public ::testing::Test
@@ -84,20 +84,20 @@ TEST_F(particleChecks, validParticlesPass)
 
 TEST_F(particleChecks, nonFiniteValuesNameTheirField)
 {
-    parts_->field<vector2D>("U")[2] = vector2D(nan, 0);
+    parts_->field<vector2D>("U")[2] = vector2D(NaN, 0);
     std::string msg = check();
     expectNamed(msg, "U", 2);
     EXPECT_NE(msg.find("nan"), std::string::npos) << msg;
     EXPECT_EQ(msg.find("positions"), std::string::npos) << msg;
 
     parts_->field<vector2D>("U")[2] = vector2D(0, 0);
-    parts_->field<scalar>("rho")[1] = inf;
+    parts_->field<scalar>("rho")[1] = Inf;
     msg = check();
     expectNamed(msg, "rho", 1);
     EXPECT_NE(msg.find("inf"), std::string::npos) << msg;
 
     parts_->field<scalar>("rho")[1] = 1000;
-    parts_->positions()[3] = vector2D(0, -inf);
+    parts_->positions()[3] = vector2D(0, -Inf);
     expectNamed(check(), "positions", 3);
 }
 

@@ -70,7 +70,7 @@ TEST(timeControls, eachBadEntryIsNamedWithItsValue)
     {
         {"deltaT 0;", "deltaT", " 0"},
         {"deltaT -0.001;", "deltaT", "-0.001"},
-        {"deltaT #eval{1/0};", "deltaT", "inf"},
+        {"deltaT #eval{sqrt(-1)};", "deltaT", "nan"},
         {"endTime -1;", "endTime", "-1"},
         {"endTime #eval{sqrt(-1)};", "endTime", "nan"},
         // (Time's own words for writeControl timeStep: "writeInterval < 1")
@@ -86,6 +86,8 @@ TEST(timeControls, eachBadEntryIsNamedWithItsValue)
         {"maxDeltaT 0;", "maxDeltaT", " 0"},
         {"maxDeltaT -1;", "maxDeltaT", "-1"},
         {"logInterval 0;", "logInterval", " 0"},
+        {"deltaT 1e-200;", "deltaT", "1e+200 fixed steps"},
+        {"startTime 1e20; deltaT 1;", "deltaT", "too small to advance"},
     };
     for (const bad& c : cases)
     {

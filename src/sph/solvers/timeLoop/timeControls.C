@@ -51,7 +51,13 @@ void Foam::SPH::checkTimeControls(const Time& runTime)
 {
     const dictionary& dict = runTime.controlDict();
 
-    checkedScalar(dict, "deltaT", {0, VGREAT, true}, "s");
+    const scalar deltaT = checkedScalar(dict, "deltaT", {0, VGREAT, true}, "s");
+    if (runTime.value() + deltaT == runTime.value())
+    {
+        FatalIOErrorInFunction(dict.lookup("deltaT"))
+            << "Entry deltaT " << deltaT << ": too small to advance the start"
+            << " time " << runTime.value() << exit(FatalIOError);
+    }
 
     const word stopAt(dict.getOrDefault<word>("stopAt", "endTime"));
     if (stopAt == "endTime" || dict.found("endTime"))
@@ -65,6 +71,20 @@ void Foam::SPH::checkTimeControls(const Time& runTime)
                 << tStart << " (startFrom "
                 << dict.getOrDefault<word>("startFrom", "latestTime")
                 << "): expected endTime > " << tStart << exit(FatalIOError);
+        }
+        // A fixed step so small that the run would never end (or stop
+        // advancing the time when t + deltaT rounds to t)
+        const scalar nSteps = (tEnd - tStart)/deltaT;
+        if
+        (
+            stopAt == "endTime" && nSteps > 1e10
+         && !dict.getOrDefault<bool>("adjustTimeStep", false)
+        )
+        {
+            FatalIOErrorInFunction(dict.lookup("deltaT"))
+                << "Entry deltaT " << deltaT << ": " << nSteps << " fixed"
+                << " steps from " << tStart << " to endTime " << tEnd
+                << " (more than 1e10)" << exit(FatalIOError);
         }
         if (tEnd == tStart && stopAt == "endTime")
         {
@@ -101,6 +121,31 @@ void Foam::SPH::checkTimeControls(const Time& runTime)
                 << "Entry logInterval " << n << ": expected a number of"
                 << " time steps >= 1" << exit(FatalIOError);
         }
+    }
+}
+
+
+void Foam::SPH::checkDeltaT
+(
+    const Time& runTime,
+    const scalar dt,
+    const std::string& state
+)
+{
+    const scalar t = runTime.value();
+    const bool toEndTime =
+        runTime.controlDict().getOrDefault<word>("stopAt", "endTime")
+     == "endTime";
+    const scalar nSteps =
+        toEndTime ? (runTime.endTime().value() - t)/dt : scalar(0);
+    if (!(dt > 0 && std::isfinite(dt) && t + dt > t && nSteps < 1e10))
+    {
+        FatalErrorInFunction
+            << "The time step at time " << t << " s is " << dt << " s: it"
+            << " cannot advance the time, or would take " << nSteps
+            << " steps to endTime (" << state.c_str() << ")" << nl
+            << "Check the initial fields (0/U, 0/p) or, on a restart, "
+            << runTime.timePath()/"lagrangian/sph" << exit(FatalError);
     }
 }
 

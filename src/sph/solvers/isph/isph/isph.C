@@ -20,6 +20,7 @@
 #include "bodyForces.H"
 #include "usawWallModel.H"
 #include "checkedEntry.H"
+#include "timeControls.H"
 
 #include <cmath>
 
@@ -132,7 +133,11 @@ void Foam::SPH::isph::addStages()
     // 000_... after eq. (36): "calibrated ... 0.7 for the Wendland kernel"
     const bool shift = schemes_.getOrDefault<bool>("shifting", true);
     const scalar shiftCoeff =
-        checkedScalar(schemes_, "shiftCoeff", 0.7, {0, VGREAT});
+        checkedScalar
+        (
+            schemes_, "shiftCoeff", 0.7, {0, 10},
+            "C of the shift eq. (36); 0.7 calibrated for the Wendland kernel"
+        );
     // Section 3.2: "D{r} <= 1.5 in 2-D"
     const scalar divRMax = schemes_.getOrDefault<scalar>("freeSurfaceDivR", 1.5);
     if (!(divRMax > 0 && divRMax < 2))
@@ -309,6 +314,12 @@ Foam::scalar Foam::SPH::isph::maxDeltaT() const
     {
         dt = min(dt, Cforce_*std::sqrt(h/accel));
     }
+    checkDeltaT
+    (
+        runTime_, dt, "eqs. (48)-(49): largest speed "
+      + std::string(Foam::name(std::sqrt(uMax2))) + " m/s, acceleration "
+      + Foam::name(accel) + " m/s^2"
+    );
     return dt;
 }
 

@@ -9,6 +9,7 @@
 #include "OStringStream.H"
 #include "fluidProperties.H"
 #include "checkedEntry.H"
+#include "timeControls.H"
 #include "Time.H"
 #include "dimensionedScalar.H"
 #include "uniformDimensionedFields.H"
@@ -294,6 +295,13 @@ Foam::scalar Foam::SPH::wcsph::maxDeltaT() const
     {
         dt = min(dt, 0.25*std::sqrt(h/maxAccel_));
     }
+    checkDeltaT
+    (
+        runTime_, dt, "eq. (15): largest speed "
+      + std::string(Foam::name(maxSpeed_)) + " m/s, sound speed "
+      + Foam::name(maxSoundSpeed_) + " m/s, acceleration "
+      + Foam::name(maxAccel_) + " m/s^2"
+    );
     return min(dt, GREAT);
 }
 

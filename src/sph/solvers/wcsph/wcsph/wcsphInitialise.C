@@ -107,6 +107,15 @@ void Foam::SPH::wcsph::setInitialFields()
     scalarField& rho = parts_.field<scalar>("rho");
     for (label i = 0; i < nFluid; ++i)
     {
+        // Tension beyond -b0 has no density in eq. (4): it is not clamped
+        if (!(pAll[i] > -work_.b0) || !std::isfinite(pAll[i]))
+        {
+            FatalErrorInFunction
+                << runTime_.path()/t0/"p" << ": the initial pressure " << pAll[i]
+                << " Pa of fluid particle " << i << " is below -rho0 c0^2/gamma"
+                << " = " << -work_.b0 << " Pa, the tension eq. (4) can hold"
+                << exit(FatalError);
+        }
         rho[i] = work_.density(pAll[i]);
     }
     wallModel_->initialWalls();
