@@ -87,6 +87,7 @@ TEST(timeControls, eachBadEntryIsNamedWithItsValue)
         {"maxDeltaT -1;", "maxDeltaT", "-1"},
         {"logInterval 0;", "logInterval", " 0"},
         {"deltaT 1e-200;", "deltaT", "1e+200 fixed steps"},
+        {"deltaT 2;", "deltaT", "no step would run"},
         {"startTime 1e20; deltaT 1;", "deltaT", "too small to advance"},
     };
     for (const bad& c : cases)

@@ -86,6 +86,16 @@ void Foam::SPH::checkTimeControls(const Time& runTime)
                 << " steps from " << tStart << " to endTime " << tEnd
                 << " (more than 1e10)" << exit(FatalIOError);
         }
+        // Time::run() runs while t < endTime - deltaT/2: a larger first
+        // step would end the run before it starts, without a word
+        const scalar dt0 = runTime.deltaTValue();
+        if (stopAt == "endTime" && tEnd > tStart && !(tStart < tEnd - 0.5*dt0))
+        {
+            FatalIOErrorInFunction(dict.lookup("deltaT"))
+                << "Entry deltaT " << dt0 << ": not less than twice the time"
+                << " from the start " << tStart << " to endTime " << tEnd
+                << ", so no step would run" << exit(FatalIOError);
+        }
         if (tEnd == tStart && stopAt == "endTime")
         {
             Info<< "endTime " << tEnd << " in " << dict.name()
