@@ -22,7 +22,7 @@ Usage
 
 #include "argList.H"
 #include "isph.H"
-#include "timeLoop.H"
+#include "solverMain.H"
 
 using namespace Foam;
 
@@ -36,11 +36,8 @@ int main(int argc, char *argv[])
     argList::noParallel();
 
     #include "setRootCase.H"
-    #include "createTime.H"
 
-    SPH::runSolver<SPH::isph>(runTime);
-
-    return 0;
+    return SPH::solverMain<SPH::isph>(args);
 }
 
 

@@ -19,7 +19,7 @@ Usage
 
 #include "argList.H"
 #include "wcsph.H"
-#include "timeLoop.H"
+#include "solverMain.H"
 
 using namespace Foam;
 
@@ -33,11 +33,8 @@ int main(int argc, char *argv[])
     argList::noParallel();
 
     #include "setRootCase.H"
-    #include "createTime.H"
 
-    SPH::runSolver<SPH::wcsph>(runTime);
-
-    return 0;
+    return SPH::solverMain<SPH::wcsph>(args);
 }
 
 

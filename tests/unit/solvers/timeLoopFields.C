@@ -208,6 +208,7 @@ void registeredFieldCase()
     }
 
     // The picture of every write time holds T without the writer naming it
+    // (the writer names the files after the case folder)
     const SPH::vtkPolyFileReader vtp(dir/"VTK"/(dir.name() + "_4.vtp"));
     const wordList names(vtp.pointFieldNames());
     EXPECT_TRUE(names.found("T"));

@@ -4,8 +4,11 @@
 
 #include "initialField.H"
 #include "Time.H"
+#include "OSspecific.H"
 #include "vectorField.H"
 #include "scalarField.H"
+
+#include <cmath>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -42,6 +45,27 @@ void Foam::SPH::initialField::badSize
 }
 
 
+template<class FileType>
+void Foam::SPH::initialField::checkFinite
+(
+    ITstream& is,
+    const FileType& v,
+    const label i
+) const
+{
+    for (direction d = 0; d < pTraits<FileType>::nComponents; ++d)
+    {
+        if (!std::isfinite(component(v, d)))
+        {
+            FatalIOErrorInFunction(is)
+                << "internalField " << (i < 0 ? "uniform " : "nonuniform ")
+                << v << (i < 0 ? "" : " (value " + Foam::name(i) + ")").c_str()
+                << ": not a finite value" << exit(FatalIOError);
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::SPH::initialField::initialField(const Time& runTime, const word& name)
@@ -61,7 +85,21 @@ Foam::SPH::initialField::initialField(const Time& runTime, const word& name)
 
 bool Foam::SPH::initialField::found() const
 {
-    return dict_.found("internalField");
+    if (dict_.found("internalField"))
+    {
+        return true;
+    }
+    // A file without its value would start the fluid from rest (or p = 0)
+    // without a word
+    if (isFile(dict_.objectPath()) || isFile(dict_.objectPath() + ".gz"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Missing entry internalField in " << dict_.objectPath()
+            << ": expected 'internalField uniform <value>;' or"
+            << " 'internalField nonuniform List<..> N (...);' (or no file:"
+            << " the fluid starts at rest, at p = 0)" << exit(FatalIOError);
+    }
+    return false;
 }
 
 
@@ -102,6 +140,7 @@ bool Foam::SPH::initialField::readAs
     {
         FileType v;
         is >> v;
+        checkFinite(is, v, -1);
         forAll(values, i)
         {
             assign(values[i], v);
@@ -119,6 +158,7 @@ bool Foam::SPH::initialField::readAs
     }
     forAll(list, i)
     {
+        checkFinite(is, list[i], i);
         assign(values[i], list[i]);
     }
     return false;

@@ -4,6 +4,8 @@
 
 #include "kernel.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -27,7 +29,7 @@ Foam::scalar Foam::SPH::kernel::readHByDr
 {
     // Checked here, before h is formed from them, so that a bad value is
     // reported against the dictionary rather than as a NaN much later
-    if (!(dr > 0))
+    if (!(dr > 0) || !std::isfinite(dr))
     {
         FatalIOErrorInFunction(dict)
             << "The particle spacing dr = " << dr
@@ -38,12 +40,15 @@ Foam::scalar Foam::SPH::kernel::readHByDr
 
     // h < dr leaves too few neighbours for any SPH sum to approximate an
     // integral
-    if (!(hByDr >= 1))
+    // Above 10 a particle would have hundreds of neighbours in 2-D (and a
+    // huge value one cell for the whole domain): no SPH scheme uses it
+    if (!(hByDr >= 1 && hByDr <= 10))
     {
         // The entry's own stream: the error names its line
         FatalIOErrorInFunction(dict.lookup("hByDr"))
             << "Entry hByDr = " << hByDr
             << ": expected a smoothing length over particle spacing >= 1"
+            << " and <= 10"
             << exit(FatalIOError);
     }
 

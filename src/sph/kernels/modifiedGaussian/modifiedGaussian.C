@@ -29,11 +29,11 @@ Foam::scalar Foam::SPH::modifiedGaussian::readK(const dictionary& dict)
 
     // With k < 1 the support would be shorter than h, hence possibly than
     // one particle spacing: no neighbours at all
-    if (!(k >= 1))
+    if (!(k >= 1 && k <= 10))
     {
         FatalIOErrorInFunction(coeffs)
             << "Entry k = " << k << " in modifiedGaussianCoeffs"
-            << ": expected a support radius in units of h >= 1"
+            << ": expected a support radius in units of h >= 1 and <= 10"
             << exit(FatalIOError);
     }
 

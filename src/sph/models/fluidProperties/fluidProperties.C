@@ -7,6 +7,8 @@
 #include "dimensionedScalar.H"
 #include "uniformDimensionedFields.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::SPH::fluidProperties::fluidProperties(const Time& runTime)
@@ -21,7 +23,11 @@ Foam::SPH::fluidProperties::fluidProperties(const Time& runTime)
     );
     rho0 = dimensionedScalar("rho", dimDensity, transport).value();
     nu = dimensionedScalar("nu", dimViscosity, transport).value();
-    if (!(rho0 > 0) || !(nu >= 0))
+    if
+    (
+        !(rho0 > 0) || !(nu >= 0)
+     || !std::isfinite(rho0) || !std::isfinite(nu)
+    )
     {
         FatalIOErrorInFunction(transport)
             << "Expected rho > 0 and nu >= 0, found rho " << rho0
@@ -43,6 +49,12 @@ Foam::SPH::fluidProperties::fluidProperties(const Time& runTime)
             << ", expected " << dimAcceleration << exit(FatalError);
     }
     g = vector2D(gField.value().x(), gField.value().y());
+    if (!std::isfinite(g.x()) || !std::isfinite(g.y()))
+    {
+        FatalErrorInFunction
+            << gField.objectPath() << ": value " << gField.value()
+            << " is not finite" << exit(FatalError);
+    }
 }
 
 

@@ -27,6 +27,7 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     timeStart_(runTime.value()),
     purgeWrite_(timeClock::takeOverPurgeWrite(runTime))
 {
+    checkTimeControls(runTime);
     const IOdictionary schemes
     (
         IOobject

@@ -19,6 +19,8 @@
 #include "wallDistance.H"
 #include "bodyForces.H"
 #include "usawWallModel.H"
+#include "checkedEntry.H"
+#include "timeControls.H"
 
 #include <cmath>
 
@@ -130,13 +132,12 @@ void Foam::SPH::isph::addStages()
 
     // 000_... after eq. (36): "calibrated ... 0.7 for the Wendland kernel"
     const bool shift = schemes_.getOrDefault<bool>("shifting", true);
-    const scalar shiftCoeff = schemes_.getOrDefault<scalar>("shiftCoeff", 0.7);
-    if (!(shiftCoeff >= 0))
-    {
-        FatalIOErrorInFunction(schemes_.lookup("shiftCoeff"))
-            << "Entry shiftCoeff " << shiftCoeff << ": expected >= 0"
-            << exit(FatalIOError);
-    }
+    const scalar shiftCoeff =
+        checkedScalar
+        (
+            schemes_, "shiftCoeff", 0.7, {0, 10},
+            "C of the shift eq. (36); 0.7 calibrated for the Wendland kernel"
+        );
     // Section 3.2: "D{r} <= 1.5 in 2-D"
     const scalar divRMax = schemes_.getOrDefault<scalar>("freeSurfaceDivR", 1.5);
     if (!(divRMax > 0 && divRMax < 2))
@@ -213,14 +214,18 @@ Foam::SPH::isph::isph(Time& runTime)
     CCFL_(runTime.controlDict().getOrDefault<scalar>("maxCo", 0.2)),
     dr_
     (
-        IOdictionary
+        checkedScalar
         (
-            IOobject
+            IOdictionary
             (
-                "sphMeshDict", runTime.system(), runTime,
-                IOobject::MUST_READ, IOobject::NO_WRITE, false
-            )
-        ).get<scalar>("dr")
+                IOobject
+                (
+                    "sphMeshDict", runTime.system(), runTime,
+                    IOobject::MUST_READ, IOobject::NO_WRITE, false
+                )
+            ),
+            "dr", {0, VGREAT, true}, "m"
+        )
     ),
     parts_(runTime, runTime.timeName()),
     nFluid_(0),
@@ -236,7 +241,7 @@ Foam::SPH::isph::isph(Time& runTime)
     UStart_(nullptr),
     nSteps_(0)
 {
-    if (!(CCFL_ > 0))
+    if (!(CCFL_ > 0) || !std::isfinite(CCFL_))
     {
         FatalIOErrorInFunction(runTime.controlDict().lookup("maxCo"))
             << "Entry maxCo " << CCFL_ << ": expected C_CFL > 0"
@@ -309,6 +314,12 @@ Foam::scalar Foam::SPH::isph::maxDeltaT() const
     {
         dt = min(dt, Cforce_*std::sqrt(h/accel));
     }
+    checkDeltaT
+    (
+        runTime_, dt, "eqs. (48)-(49): largest speed "
+      + std::string(Foam::name(std::sqrt(uMax2))) + " m/s, acceleration "
+      + Foam::name(accel) + " m/s^2"
+    );
     return dt;
 }
 

@@ -15,6 +15,7 @@ Description
 #include "initialField.H"
 #include "mathematicalConstants.H"
 #include "moveWalls.H"
+#include "particleChecks.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -62,6 +63,7 @@ void Foam::SPH::isph::initialise(const scalar rho0)
     {
         Info<< "Restarting from " << parts_.path() << nl;
         parts_.read();
+        checkRestartParticles(parts_, walls_->patchNames().size(), sphCloud::solverDomain(*walls_, kernel_->support()));
         nFluid_ = sphCloud::countFluid(parts_);
         wallModel_->checkRestart
         (

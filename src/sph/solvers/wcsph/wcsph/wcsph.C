@@ -8,6 +8,8 @@
 #include "wcsphShifting.H"
 #include "OStringStream.H"
 #include "fluidProperties.H"
+#include "checkedEntry.H"
+#include "timeControls.H"
 #include "Time.H"
 #include "dimensionedScalar.H"
 #include "uniformDimensionedFields.H"
@@ -44,14 +46,16 @@ void Foam::SPH::wcsph::readSchemes()
 {
     scalar& c0 = work_.c0;
     scalar& gamma = work_.gamma;
-    gamma = schemes_.getOrDefault<scalar>("gamma", 7);
+    gamma = checkedScalar(schemes_, "gamma", 7, {1, VGREAT}, "Tait exponent");
     if (schemes_.found("c0"))
     {
-        c0 = schemes_.get<scalar>("c0");
+        c0 = checkedScalar(schemes_, "c0", {0, VGREAT, true}, "m/s");
     }
     else if (schemes_.found("Umax"))
     {
-        c0 = schemes_.getOrDefault<scalar>("c0ByUmax", 10)*schemes_.get<scalar>("Umax");
+        c0 =
+            checkedScalar(schemes_, "c0ByUmax", 10, {0, VGREAT, true})
+           *checkedScalar(schemes_, "Umax", {0, VGREAT, true}, "m/s");
     }
     else
     {
@@ -67,6 +71,13 @@ void Foam::SPH::wcsph::readSchemes()
             << " and gamma " << gamma << exit(FatalIOError);
     }
     work_.b0 = work_.rho0*c0*c0/gamma;
+    if (!std::isfinite(work_.b0) || !std::isfinite(c0))
+    {
+        FatalIOErrorInFunction(schemes_)
+            << "c0 " << c0 << " m/s with rho " << work_.rho0 << " and gamma "
+            << gamma << ": the Tait stiffness rho c0^2/gamma is not a finite"
+            << " number" << exit(FatalIOError);
+    }
 
     work_.densityDiffusion =
         schemes_.getOrDefault<bool>("densityDiffusion", true);
@@ -76,27 +87,21 @@ void Foam::SPH::wcsph::readSchemes()
 
     // Not in 004_..., which relies on the density diffusion alone; a small
     // alpha damps the velocity noise of water at rest
-    work_.alphaAV = schemes_.getOrDefault<scalar>("artificialViscosity", 0);
-    if (work_.alphaAV < 0)
-    {
-        FatalIOErrorInFunction(schemes_.lookup("artificialViscosity"))
-            << "artificialViscosity (Monaghan's alpha) must be >= 0"
-            << exit(FatalIOError);
-    }
+    work_.alphaAV = checkedScalar
+    (
+        schemes_, "artificialViscosity", 0, {0, VGREAT}, "Monaghan's alpha"
+    );
     // Morris's with dummies, eq. (15) with USAW walls: the wall model's
     const viscosityModel viscosity = viscosityModelNames.getOrDefault
     (
         "viscosity", schemes_, viscosityModel::Morris
     );
     work_.viscous = work_.nu != 0 && viscosity == viscosityModel::Morris;
-    skinByH_ = schemes_.getOrDefault<scalar>("neighbourSkin", 0.2);
-    if (skinByH_ < 0)
-    {
-        FatalIOErrorInFunction(schemes_)
-            << "neighbourSkin " << skinByH_ << ": expected a length in h >= 0"
-            << " (0: rebuild the neighbour list at every stage)"
-            << exit(FatalIOError);
-    }
+    skinByH_ = checkedScalar
+    (
+        schemes_, "neighbourSkin", 0.2, {0, VGREAT},
+        "a length in h; 0: rebuild the neighbour list at every stage"
+    );
 }
 
 
@@ -142,7 +147,7 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
                 IOobject::MUST_READ, IOobject::NO_WRITE, false
             )
         );
-        dr_ = meshDict.get<scalar>("dr");
+        dr_ = checkedScalar(meshDict, "dr", {0, VGREAT, true}, "m");
         work_.dr = dr_;
     }
     kernel_ = kernel::New(schemes_, dr_);
@@ -290,6 +295,13 @@ Foam::scalar Foam::SPH::wcsph::maxDeltaT() const
     {
         dt = min(dt, 0.25*std::sqrt(h/maxAccel_));
     }
+    checkDeltaT
+    (
+        runTime_, dt, "eq. (15): largest speed "
+      + std::string(Foam::name(maxSpeed_)) + " m/s, sound speed "
+      + Foam::name(maxSoundSpeed_) + " m/s, acceleration "
+      + Foam::name(maxAccel_) + " m/s^2"
+    );
     return min(dt, GREAT);
 }
 

@@ -12,6 +12,7 @@ Description
 #include "Time.H"
 #include "OSspecific.H"
 #include "initialField.H"
+#include "particleChecks.H"
 
 #include <cmath>
 
@@ -106,6 +107,15 @@ void Foam::SPH::wcsph::setInitialFields()
     scalarField& rho = parts_.field<scalar>("rho");
     for (label i = 0; i < nFluid; ++i)
     {
+        // Tension beyond -b0 has no density in eq. (4): it is not clamped
+        if (!(pAll[i] > -work_.b0) || !std::isfinite(pAll[i]))
+        {
+            FatalErrorInFunction
+                << runTime_.path()/t0/"p" << ": the initial pressure " << pAll[i]
+                << " Pa of fluid particle " << i << " is below -rho0 c0^2/gamma"
+                << " = " << -work_.b0 << " Pa, the tension eq. (4) can hold"
+                << exit(FatalError);
+        }
         rho[i] = work_.density(pAll[i]);
     }
     wallModel_->initialWalls();
@@ -125,6 +135,7 @@ void Foam::SPH::wcsph::initialise()
     {
         Info<< "Restarting from " << parts_.path() << nl;
         parts_.read();
+        checkRestartParticles(parts_, walls_->patchNames().size(), sphCloud::solverDomain(*walls_, kernel_->support()));
         const label nFluid = sphCloud::countFluid(parts_);
         work_.nFluid = nFluid;
         wallModel_->checkRestart(parts_.path(), nFluid, parts_.size() - nFluid);

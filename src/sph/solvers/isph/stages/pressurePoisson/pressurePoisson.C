@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pressurePoisson.H"
+#include "checkedEntry.H"
 #include "usawOperators.H"
 #include "kernelDispatch.H"
 
@@ -205,9 +206,9 @@ Foam::SPH::pressurePoisson::pressurePoisson
     const dictionary& controls = solution.subOrEmptyDict("ISPH");
     stopIfNotConverged_ =
         controls.getOrDefault<bool>("stopIfNotConverged", stopIfNotConverged_);
-    diagonalReinforcement_ = controls.getOrDefault<scalar>
+    diagonalReinforcement_ = checkedScalar
     (
-        "diagonalReinforcement", diagonalReinforcement_
+        controls, "diagonalReinforcement", diagonalReinforcement_, {0, 1}
     );
     if (!(diagonalReinforcement_ >= 0))
     {
@@ -215,7 +216,10 @@ Foam::SPH::pressurePoisson::pressurePoisson
             << "Entry diagonalReinforcement " << diagonalReinforcement_
             << ": expected >= 0" << exit(FatalIOError);
     }
-    pRefValue_ = controls.getOrDefault<scalar>("pRefValue", pRefValue_);
+    pRefValue_ = checkedScalar
+    (
+        controls, "pRefValue", pRefValue_, {-VGREAT, VGREAT}, "Pa"
+    );
 
     if (ownGradient_)
     {

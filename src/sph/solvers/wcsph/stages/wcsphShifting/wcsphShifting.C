@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wcsphShifting.H"
+#include "checkedEntry.H"
 #include "kernelDispatch.H"
 
 #include <cmath>
@@ -33,7 +34,14 @@ Foam::SPH::wcsphShifting::wcsphShifting
     wallModel_(wallModel),
     kernel_(W),
     searchNeighbours_(searchNeighbours),
-    coeff_(schemes.getOrDefault<scalar>("shiftCoeff", 2)),
+    coeff_
+    (
+        checkedScalar
+        (
+            schemes, "shiftCoeff", 2, {0, 100, true},
+            "A of the shift's D = A h U dt; 2 by default"
+        )
+    ),
     velocity_
     (
         velocityScaleNames.getOrDefault

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wcsphUsaw.H"
+#include "checkedEntry.H"
 #include "wcsphUsawTemplates.C"
 #include "wcsphWallPressure.H"
 #include "kernelDispatch.H"
@@ -58,7 +59,10 @@ Foam::SPH::wcsphUsaw::wcsphUsaw
 :
     wcsphWallModel(runTime, schemes, walls, W, work),
     motion_(checkConditions(runTime, walls), walls),
-    pBackground_(schemes.getOrDefault<scalar>("backgroundPressure", 0)),
+    pBackground_
+    (
+        checkedScalar(schemes, "backgroundPressure", 0, {0, VGREAT}, "Pa")
+    ),
     wallX_(walls.points().size()),
     wallU_(walls.points().size())
 {
