@@ -163,7 +163,10 @@ Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
             }
         }
     }
-    return -1;
+
+    // A move no valid step makes, then the method's physical bounds
+    const label far = displacement_.find(cloud, start_.positions, runTime_, what);
+    return far >= 0 ? far : solver_.findUnphysical(what);
 }
 
 
@@ -270,6 +273,9 @@ void Foam::SPH::timeLoop::run()
     solver_.printSettings();
     Info<< "    checks              NaN/Inf in any field, particles leaving"
         << " the domain" << (solver_.crossing() ? " or crossing a wall" : "")
+        << ", " << displacement_.describe().c_str()
+        << (solver_.physicalChecks().empty() ? "" : ", ")
+        << solver_.physicalChecks().c_str()
         << ", deltaT below " << minDeltaTFraction_ << " of the first; the"
         << " last good state is written" << nl << endl;
 
@@ -320,6 +326,7 @@ void Foam::SPH::timeLoop::run()
     }
 
     solver_.printTimes();
+    displacement_.printSummary(Info);
     Info<< "End" << nl << endl;
 }
 

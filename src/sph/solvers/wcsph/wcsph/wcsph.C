@@ -114,6 +114,7 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
         )
     ),
     work_(parts_, nbrs_),
+    bounds_(schemes_, work_),
     walls_(new wallMesh(runTime)),
     parts_(runTime, runTime.timeName()),
     dr_(0),
@@ -162,6 +163,7 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     );
     work_.cloud = cloud_.get();
     wallModel_->setUp();
+    bounds_.checkStart(runTime.timeName());
 
     if (schemes_.getOrDefault<bool>("wallBounce", true))
     {
@@ -297,6 +299,7 @@ Foam::scalar Foam::SPH::wcsph::maxDeltaT() const
 void Foam::SPH::wcsph::afterStep(const scalar dt)
 {
     ++nSteps_;
+    bounds_.afterStep(runTime_);
 
     // The neighbour search function objects use
     cloud_->updateCells();
@@ -377,6 +380,7 @@ void Foam::SPH::wcsph::printTimes() const
     }
     Info<< "Fluid particles " << work_.nFluid << ", total mass " << totalMass()
         << " kg/m" << nl;
+    bounds_.printSummary(Info);
 }
 
 
