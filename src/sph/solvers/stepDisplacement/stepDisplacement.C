@@ -11,7 +11,7 @@
 
 Foam::SPH::stepDisplacement::stepDisplacement(const Time& runTime)
 :
-    maxByH_(0.5),
+    maxByH_(1),
     reached_(-1),
     tReached_(0)
 {

@@ -325,8 +325,8 @@ void Foam::SPH::timeLoop::run()
         }
     }
 
-    solver_.printTimes();
     displacement_.printSummary(Info);
+    solver_.printTimes();
     Info<< "End" << nl << endl;
 }
 

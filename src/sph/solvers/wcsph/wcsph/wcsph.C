@@ -378,9 +378,9 @@ void Foam::SPH::wcsph::printTimes() const
         Info<< "Steps " << nSteps_ << ", particle-steps per second "
             << work_.nFluid*nSteps_/stages_.seconds() << nl;
     }
+    bounds_.printSummary(Info);
     Info<< "Fluid particles " << work_.nFluid << ", total mass " << totalMass()
         << " kg/m" << nl;
-    bounds_.printSummary(Info);
 }
 
 
