@@ -218,7 +218,10 @@ Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
             }
         }
     }
-    return -1;
+
+    // A move no valid step makes, then the method's physical bounds
+    const label far = displacement_.find(cloud, start_.positions, runTime_, what);
+    return far >= 0 ? far : solver_.findUnphysical(what);
 }
 
 
@@ -339,6 +342,9 @@ void Foam::SPH::timeLoop::run()
     solver_.printSettings();
     Info<< "    checks              NaN/Inf in any field, particles leaving"
         << " the domain" << (solver_.crossing() ? " or crossing a wall" : "")
+        << ", " << displacement_.describe().c_str()
+        << (solver_.physicalChecks().empty() ? "" : ", ")
+        << solver_.physicalChecks().c_str()
         << ", deltaT below " << minDeltaTFraction_ << " of the first; the"
         << " last good state is written" << nl << endl;
 
@@ -387,6 +393,7 @@ void Foam::SPH::timeLoop::run()
         }
     }
 
+    displacement_.printSummary(Info);
     solver_.printTimes();
     Info<< "End" << nl << endl;
 }

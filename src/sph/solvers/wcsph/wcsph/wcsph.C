@@ -119,6 +119,7 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
         )
     ),
     work_(parts_, nbrs_),
+    bounds_(schemes_, work_),
     walls_(new wallMesh(runTime)),
     parts_(runTime, runTime.timeName()),
     dr_(0),
@@ -167,6 +168,7 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     );
     work_.cloud = cloud_.get();
     wallModel_->setUp();
+    bounds_.checkStart(runTime.timeName());
 
     if (schemes_.getOrDefault<bool>("wallBounce", true))
     {
@@ -309,6 +311,7 @@ Foam::scalar Foam::SPH::wcsph::maxDeltaT() const
 void Foam::SPH::wcsph::afterStep(const scalar dt)
 {
     ++nSteps_;
+    bounds_.afterStep(runTime_);
 
     // The neighbour search function objects use
     cloud_->updateCells();
@@ -387,6 +390,7 @@ void Foam::SPH::wcsph::printTimes() const
         Info<< "Steps " << nSteps_ << ", particle-steps per second "
             << work_.nFluid*nSteps_/stages_.seconds() << nl;
     }
+    bounds_.printSummary(Info);
     Info<< "Fluid particles " << work_.nFluid << ", total mass " << totalMass()
         << " kg/m" << nl;
 }

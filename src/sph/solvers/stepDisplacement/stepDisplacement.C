@@ -1,0 +1,100 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "stepDisplacement.H"
+#include "IOdictionary.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::stepDisplacement::stepDisplacement(const Time& runTime)
+:
+    maxByH_(1),
+    reached_(-1),
+    tReached_(0)
+{
+    const IOdictionary schemes
+    (
+        IOobject
+        (
+            "sphSchemes", runTime.system(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    maxByH_ = schemes.getOrDefault<scalar>("maxStepDisplacement", maxByH_);
+    if (!(maxByH_ > 0 && std::isfinite(maxByH_)))
+    {
+        FatalIOErrorInFunction(schemes)
+            << "Entry maxStepDisplacement " << maxByH_ << ": expected a"
+            << " length in h > 0 (the largest move of a particle in one step)"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::string Foam::SPH::stepDisplacement::describe() const
+{
+    return
+        "a fluid particle moving more than maxStepDisplacement "
+      + Foam::name(maxByH_) + " h in a step";
+}
+
+
+Foam::label Foam::SPH::stepDisplacement::find
+(
+    const sphCloud& cloud,
+    const List<vector2D>& start,
+    const Time& runTime,
+    string& what
+) const
+{
+    const domain& dom = cloud.dom();
+    const vector2D* x = cloud.parts().positions().cdata();
+    const scalar h = cloud.W().h();
+    label iMax = -1;
+    scalar max2 = -1;
+    for (label i = 0; i < cloud.nFluid(); ++i)
+    {
+        const scalar d2 = magSqr(dom.separation(x[i], start[i]));
+        if (d2 > max2)
+        {
+            max2 = d2;
+            iMax = i;
+        }
+    }
+    if (iMax < 0) return -1;
+
+    const scalar d = std::sqrt(max2);
+    if (d > maxByH_*h)
+    {
+        const scalar dt = runTime.deltaTValue();
+        what =
+            "Moved " + Foam::name(d/h) + " h (" + Foam::name(d) + " m, a mean"
+            " speed of " + Foam::name(d/dt) + " m/s) in one step of "
+          + Foam::name(dt) + " s, more than maxStepDisplacement "
+          + Foam::name(maxByH_) + " h (system/sphSchemes): the step is too"
+            " long for the flow, or the state is blowing up:";
+        return iMax;
+    }
+    if (d/h > reached_)
+    {
+        reached_ = d/h;
+        tReached_ = runTime.value();
+    }
+    return -1;
+}
+
+
+void Foam::SPH::stepDisplacement::printSummary(Ostream& os) const
+{
+    if (reached_ < 0) return;
+    os  << "Largest move in a step: " << reached_ << " h (t = " << tReached_
+        << " s), maxStepDisplacement " << maxByH_ << " h" << nl;
+}
+
+
+// ************************************************************************* //
