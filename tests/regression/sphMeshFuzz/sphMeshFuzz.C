@@ -108,7 +108,7 @@ namespace
         with(0, "-0.05", "dr");
         with(0, "1e-12", "dr");
         with(0, "1e-4", "maxParticles");
-        with(0, "0.6", "too coarse");
+        with(0, "0.6", "spacing");
         with(0, "2", "dr");
         with(1, "0", "nDummyLayers");
         with(1, "-3", "nDummyLayers");
@@ -123,7 +123,7 @@ namespace
         with(10, "1", "tank");
         with(12, "0", "tank");
         with(14, "0", "radius");
-        with(14, "1e5", "bump");
+        with(14, "1e5", "maxParticles");
         with(15, "340", "startAngle");
         with(16, "200.0000000001", "bump");
         with(16, "1000", "endAngle");
@@ -180,10 +180,15 @@ namespace
         for (const std::string& name :
              {"\"a b\"", "\"a;b\"", "\"a{b\"", "\"a}b\"", "\"a(b\"", "\"a/b\"", "\"a'b\"", "\"1abc\"", "\".*\""})
         {
+            // The name in the message (refused by sphMesh, or by OpenFOAM's
+            // reader as a regular expression); a slash scopes the keyword:
+            // "a/b" is b in a, which has no type
+            const std::string bare = std::string(name).substr(1, std::string(name).size() - 2);
+            const std::string why = bare == "a/b" ? "sphMeshDict" : bare;
             add("wallName" + name, head + "walls { " + name + " { type box; min (0 0); max (1 1); } }\n",
-                "cannot be written");
+                why);
             add("regionName" + name, "dr 0.05;\nfluid { " + name + " { type box; min (0 0); max (0.5 0.5); } }\n" + tank,
-                "cannot be written");
+                why);
         }
         add("regionOutside", "dr 0.05;\nfluid { w { type box; min (0 0); max (0.5 0.5); }\n"
             "  far { type box; min (3 3); max (4 4); } }\n" + tank, "entirely outside");

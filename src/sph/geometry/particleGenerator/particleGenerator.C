@@ -300,7 +300,7 @@ Foam::SPH::particleGenerator::particleGenerator
 )
 :
     runTime_(runTime),
-    reader_(),
+    reader_(runTime.path()/runTime.system()/"sphMeshDict"),
     dict_
     (
         IOobject
@@ -320,7 +320,6 @@ Foam::SPH::particleGenerator::particleGenerator
 {
     // Read: the traps back, the numbers checked
     reader_.release();
-    sphMeshInput::checkDuplicates(dict_.objectPath());
     sphMeshInput::checkNumbers(dict_);
     maxParticles_ = readMaxParticles();
     Info<< "Particle spacing dr = " << dr_ << nl;

@@ -4,7 +4,9 @@
 
 #include "sphMeshInput.H"
 #include "IOstreams.H"
+#include "OSspecific.H"
 #include "IStringStream.H"
+#include "OStringStream.H"
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -16,6 +18,20 @@ Foam::SPH::sphMeshDictReader::sphMeshDictReader()
     held_(true)
 {
     std::feholdexcept(&env_);
+}
+
+
+Foam::SPH::sphMeshDictReader::sphMeshDictReader(const fileName& path)
+:
+    held_(false)
+{
+    // A missing file is left to the IOdictionary to report
+    if (isFile(path))
+    {
+        sphMeshInput::checkDuplicates(path);
+    }
+    std::feholdexcept(&env_);
+    held_ = true;
 }
 
 
@@ -42,10 +58,40 @@ void Foam::SPH::sphMeshInput::checkDuplicates(const fileName& path)
     // OpenFOAM's own directive on the first line, which keeps the line
     // numbers; the stream named as the file for the messages and #include
     sphMeshDictReader hold;
-    IStringStream is("#inputMode error " + text.str());
-    is.name() = path;
-    const dictionary dict(is);
+    const bool throwing = FatalError.throwExceptions(true);
+    const bool ioThrowing = FatalIOError.throwExceptions(true);
+    std::string why;
+    try
+    {
+        IStringStream is("#inputMode error " + text.str());
+        is.name() = path;
+        const dictionary dict(is);
+    }
+    catch (const IOerror& e)
+    {
+        OStringStream os;
+        os  << e.message().c_str() << nl << "file: " << e.ioFileName().c_str();
+        if (e.ioStartLineNumber() >= 0)
+        {
+            os  << " at line " << e.ioStartLineNumber();
+        }
+        why = os.str();
+    }
+    catch (const error& e)
+    {
+        why = e.message() + "\nfile: " + path;
+    }
     entry::resetInputMode();
+    FatalError.throwExceptions(throwing);
+    FatalIOError.throwExceptions(ioThrowing);
+    hold.release();
+
+    if (!why.empty())
+    {
+        FatalErrorInFunction
+            << "Cannot read " << path << ":" << nl << why.c_str() << nl
+            << exit(FatalError);
+    }
 }
 
 
