@@ -210,6 +210,32 @@ TEST(sphMeshInput, crossingWalls)
 }
 
 
+TEST(sphMeshInput, wallsCrossingAtASharedVertex)
+{
+    // The baffle's vertex at y = 0 is the tank's at x = 0.7: an X through
+    // one point
+    expectError("sphMeshCrossingVertex", "dr 0.1;\n" + water +
+        "walls { tank { type box; min (0 0); max (1 1); }\n"
+        "        baffle { type line; points ((0.7 -0.5) (0.7 0.5)); } }\n",
+        {"Wall patches tank and baffle cross", "sphMeshDict.walls.baffle"});
+}
+
+
+TEST(sphMeshInput, wallEndOnAnotherWallIsAJunction)
+{
+    // A baffle standing on the floor, at a vertex of it and between two
+    for (const std::string x : {"0.7", "0.75"})
+    {
+        const fileName dir = meshCase("sphMeshJunction" + x.substr(2), "dr 0.1;\n" + water +
+            "walls { tank { type box; min (0 0); max (1 1); }\n"
+            "        baffle { type line; points ((" + x + " 0) (" + x + " 0.3)); } }\n");
+        std::string out;
+        EXPECT_EQ(run(sphMeshExe + " -case " + dir, out), 0) << out;
+        EXPECT_NE(out.find("Fluid particles: 25"), std::string::npos) << out;
+    }
+}
+
+
 TEST(sphMeshInput, patchNameWithASpace)
 {
     expectError("sphMeshBadName", "dr 0.1;\n" + water +

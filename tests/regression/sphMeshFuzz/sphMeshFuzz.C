@@ -18,8 +18,11 @@ Description
     particles written. Never a signal (exit 128 + n), a timeout (124) or a
     stack trace.
 
-    Accepted (documented): a truncated dictionary that still reads as a
-    complete valid one (cut within the trailing comment).
+    Accepted (documented): valid cases at the checks' edges: a lattice
+    origin off the walls' corner, 100 dummy layers, maxParticles above the
+    estimate, a region exactly 2 dr across, names with . - : _, a wall end
+    standing on another wall (a T junction), a subtracted hole, an arc of
+    about dr (0.1 x 30 degrees = 0.052 >= dr 0.05).
 
 \*---------------------------------------------------------------------------*/
 
@@ -203,6 +206,24 @@ namespace
         add("includeMissing", "#include \"nonexistent\"\n" + head + tank, "nonexistent");
         add("unbalanced", head + "walls { tank { type box; min (0 0); max (1 1); }\n", "sphMeshDict");
         add("stray", head + tank + "}\n", "sphMeshDict");
+
+        // Accepted (documented): valid cases near the checks' limits
+        auto ok = [&](const std::string& name, const std::string& body)
+        {
+            all.push_back({name, body, "", true});
+        };
+        ok("acceptOrigin", "latticeOrigin (0.01 0.02);\n" + head + tank);
+        ok("acceptLayers", "nDummyLayers 100;\n" + head + tank);
+        ok("acceptMaxParticles", "maxParticles 1000;\n" + head + tank);
+        ok("acceptTwoAcross", "dr 0.25;\nfluid { w { type box; min (0 0); max (0.5 0.5); } }\n" + tank);
+        ok("acceptNames", head + "walls { Tank.left-1 { type line; points ((0 1) (0 0)); }\n"
+            "  tank_bottom:2 { type polyline; points ((0 0) (1 0) (1 1) (0 1)); } }\n");
+        ok("acceptTJunction", head + "walls { tank { type box; min (0 0); max (1 1); }\n"
+            "  baffle { type line; points ((0.75 0) (0.75 0.3)); } }\n");
+        ok("acceptSubtract", "dr 0.05;\nfluid { w { type box; min (0 0); max (0.5 0.4); }\n"
+            "  hole { type circle; centre (0.25 0.2); radius 0.1; operation subtract; } }\n" + tank);
+        ok("acceptArcOfDr", head + "walls { tank { type box; min (0 0); max (1 1); }\n"
+            "  bump { type arc; centre (0.8 0.8); radius 0.1; startAngle 0; endAngle 30; side outside; } }\n");
 
         // The valid case cut short
         const std::string full = fill(valid);

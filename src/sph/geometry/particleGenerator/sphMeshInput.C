@@ -65,6 +65,7 @@ void Foam::SPH::sphMeshInput::checkDuplicates(const fileName& path)
     {
         IStringStream is("#inputMode error " + text.str());
         is.name() = path;
+        is.lineNumber() = 1;
         const dictionary dict(is);
     }
     catch (const IOerror& e)

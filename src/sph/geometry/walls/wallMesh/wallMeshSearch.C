@@ -211,6 +211,15 @@ bool Foam::SPH::wallMesh::findCrossing
             {
                 return false;
             }
+            // On an end of k: a crossing only if that end goes on too (a
+            // wall end at a vertex of another wall is a junction)
+            for (const label w : {segments_[k].first(), segments_[k].second()})
+            {
+                if (mag(domain_.separation(points_[v], points_[w])) <= tol)
+                {
+                    return inner(w);
+                }
+            }
             const vector2D p0(domain_.image(points_[segments_[k].first()], points_[v]));
             const vector2D e(segmentVector(k));
             const scalar u = min(max(((points_[v] - p0) & e)/magSqr(e), 0.0), 1.0);
