@@ -2,9 +2,9 @@
   sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
 -------------------------------------------------------------------------------
 Description
-    particleGenerator's writing: into a new folder beside constant/sphMesh,
-    every file checked complete, then swapped in; a read-only folder or a
-    failed write is an error and the old mesh stays (issue 12).
+    particleGenerator's writing: the old constant/sphMesh moved aside, the
+    new one written and every file checked complete; a read-only folder or
+    a failed write is an error and the old mesh is put back (issue 12).
 
 \*---------------------------------------------------------------------------*/
 
@@ -116,46 +116,46 @@ void Foam::SPH::particleGenerator::writeInto(const fileName& local) const
 
 void Foam::SPH::particleGenerator::write() const
 {
-    // Into a new folder beside constant/sphMesh, every file checked, then
-    // swapped in: a failed write (disk full, read-only) leaves the old
-    // mesh as it was and says so
+    // The old mesh moved aside, the new one written in its place and every
+    // file checked: a failed write (disk full, read-only) puts the old mesh
+    // back and says so (written in place, the headers' location is right)
     checkWritable();
     const fileName constDir(runTime_.path()/runTime_.constant());
     const fileName meshDir(constDir/"sphMesh");
-    const word tag(Foam::name(label(::getpid())));
-    const word newName("sphMesh.new-" + tag);
-    const fileName newDir(constDir/newName);
-    const fileName oldDir(constDir/("sphMesh.old-" + tag));
-    rmDir(newDir, true);
+    const fileName oldDir
+    (
+        constDir/("sphMesh.old-" + Foam::name(label(::getpid())))
+    );
+    rmDir(oldDir, true);
 
     auto fail = [&](const std::string& what)
     {
-        rmDir(newDir, true);
+        rmDir(meshDir, true);
+        if (isDir(oldDir))
+        {
+            mv(oldDir, meshDir);
+        }
         FatalErrorInFunction
             << "Writing the mesh failed: " << what.c_str() << nl
-            << meshDir << " is unchanged (disk full? read-only?); nothing"
+            << meshDir << " is as it was (disk full? read-only?); nothing"
             << " written" << exit(FatalError);
     };
 
-    if (!mkDir(newDir))
+    if (isDir(meshDir) && !mv(meshDir, oldDir))
     {
-        fail("cannot create " + newDir);
+        FatalErrorInFunction
+            << "Cannot move the old " << meshDir << " aside: nothing written"
+            << exit(FatalError);
     }
-    writeInto(newName);
-    const fileName bad(incompleteFile(newDir));
+    if (!mkDir(meshDir))
+    {
+        fail("cannot create " + meshDir);
+    }
+    writeInto("sphMesh");
+    const fileName bad(incompleteFile(meshDir));
     if (!bad.empty())
     {
         fail(bad + " is incomplete or missing");
-    }
-
-    if (isDir(meshDir) && !mv(meshDir, oldDir))
-    {
-        fail("cannot move the old " + meshDir + " aside");
-    }
-    if (!mv(newDir, meshDir))
-    {
-        mv(oldDir, meshDir);
-        fail("cannot rename " + newDir + " to " + meshDir);
     }
     if (isDir(oldDir) && !rmDir(oldDir, true))
     {
