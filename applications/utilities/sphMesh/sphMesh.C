@@ -10,8 +10,16 @@ Description
     (WCSPH), from system/sphMeshDict, or with -fromPolyMesh from the 2-D
     OpenFOAM mesh in constant/polyMesh (the mesh of the FV case).
 
-    Writes constant/sphMesh/{fluid,walls,dummy}/ and a VTK picture in
-    VTK/sphMesh.vtp and VTK/sphMesh_walls.vtp.
+    Writes constant/sphMesh/{fluid,walls,dummy}/, constant/sphMesh/domain,
+    constant/sphMesh/layout (the wall model the particles were laid out for,
+    which the solvers check) and a VTK picture in VTK/sphMesh.vtp and
+    VTK/sphMesh_walls.vtp.
+
+    Every input is checked before it is used (SPH::particleGenerator): a
+    number out of range, a count above maxParticles (estimated before
+    seeding), a duplicate or unwritable name, crossing or overlapping walls,
+    fluid outside the walls, a too coarse dr, a read-only constant/sphMesh
+    are fatal errors naming the file and entry; never a signal or a hang.
 
 Usage
     sphMesh [-fromPolyMesh] [-case dir]

@@ -16,6 +16,7 @@ Description
 #include "wallShape.H"
 #include "particles.H"
 #include "mathematicalConstants.H"
+#include <sstream>
 
 using namespace Foam;
 using namespace Foam::SPH;
@@ -149,6 +150,64 @@ TEST(wallModel, usawRestartWithOtherWallParticlesIsAnError)
         EXPECT_NE(msg.find("0.1/lagrangian/sph"), std::string::npos) << msg;
         EXPECT_NE(msg.find("boundaryMethod usaw"), std::string::npos) << msg;
     }
+}
+
+
+TEST(wallModel, meshMadeForAnotherModelIsAnErrorSayingHowToRemakeIt)
+{
+    // sphMesh's record in constant/sphMesh/layout: a mesh laid out for
+    // dummyRepulsive taken by usaw (isphFoam), and the reverse
+    sphTest::throwOnFatal();
+    const scalar dr = 0.1;
+    const wallMesh walls(boxWalls(dr));
+    for (const std::string made : {"dummyRepulsive", "usaw"})
+    {
+        const std::string other = made == "usaw" ? "dummyRepulsive" : "usaw";
+        const fileName dir = sphTest::makeCase("wallModelMesh" + made);
+        auto runTime = sphTest::makeTime(dir);
+        mkDir(dir/"constant"/"sphMesh");
+        select(made)->writeLayout(*runTime, "sphMesh", dr, made == "usaw" ? 0 : 2);
+
+        DynamicList<vector2D> x;
+        DynamicList<label> type, patch;
+        try
+        {
+            select(other)->wallParticles(*runTime, walls, x, type, patch);
+            FAIL() << "a mesh made for " << made << " taken by " << other;
+        }
+        catch (const Foam::error& e)
+        {
+            const std::string msg(e.message());
+            EXPECT_NE(msg.find("made by sphMesh for boundaryMethod " + made),
+                      std::string::npos) << msg;
+            EXPECT_NE(msg.find("set boundaryMethod " + other
+                + " in system/sphSchemes and run sphMesh again"),
+                      std::string::npos) << msg;
+        }
+        // Its own model takes it
+        if (made == "usaw")
+        {
+            select(made)->wallParticles(*runTime, walls, x, type, patch);
+            EXPECT_EQ(x.size(), walls.points().size());
+        }
+    }
+}
+
+
+TEST(wallModel, meshWithoutTheRecordIsAcceptedWithANote)
+{
+    // A mesh from before sphMesh wrote constant/sphMesh/layout
+    const wallMesh walls(boxWalls(0.1));
+    const fileName dir = sphTest::makeCase("wallModelOldMesh");
+    auto runTime = sphTest::makeTime(dir);
+    DynamicList<vector2D> x;
+    DynamicList<label> type, patch;
+    std::ostringstream log;
+    std::streambuf* old = std::cout.rdbuf(log.rdbuf());
+    select("usaw")->wallParticles(*runTime, walls, x, type, patch);
+    std::cout.rdbuf(old);
+    EXPECT_EQ(x.size(), walls.points().size());
+    EXPECT_NE(log.str().find("no record of its wall model"), std::string::npos) << log.str();
 }
 
 

@@ -24,14 +24,15 @@ namespace
     Foam::IOobject domainIO
     (
         const Foam::objectRegistry& db,
-        const Foam::IOobject::readOption r
+        const Foam::IOobject::readOption r,
+        const Foam::fileName& local = "sphMesh"
     )
     {
         return Foam::IOobject
         (
             Foam::SPH::domain::dictName,
             db.time().constant(),
-            "sphMesh",
+            local,
             db,
             r,
             Foam::IOobject::NO_WRITE,
@@ -294,9 +295,13 @@ void Foam::SPH::domain::report(Ostream& os) const
 }
 
 
-void Foam::SPH::domain::write(const objectRegistry& db) const
+void Foam::SPH::domain::write
+(
+    const objectRegistry& db,
+    const fileName& local
+) const
 {
-    IOobject io(domainIO(db, IOobject::NO_READ));
+    IOobject io(domainIO(db, IOobject::NO_READ, local));
     io.note() =
         "box of the case and its periodic directions, written by sphMesh";
     IOdictionary dict(io);

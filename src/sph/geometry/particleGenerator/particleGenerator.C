@@ -10,19 +10,23 @@
 #include "polyMesh.H"
 #include "Time.H"
 #include "IOmanip.H"
+#include "OSspecific.H"
+#include <unistd.h>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::SPH::particleGenerator::readSpacing() const
 {
     const scalar dr = dict_.get<scalar>("dr");
-    if (dr <= 0)
+    // Written as !(in range) so that NaN is refused too; the bounds keep
+    // every ratio and product of lengths finite
+    if (!(dr > 0) || !(dr >= 1e-15 && dr <= 1e6))
     {
         // The entry's own stream: the error names its line
         FatalIOErrorInFunction(dict_.lookup("dr"))
             << "Entry 'dr' (particle spacing) is " << dr
-            << "; expected a positive length in metres" << nl
-            << exit(FatalIOError);
+            << "; expected a positive length in metres, from 1e-15 to 1e6"
+            << nl << exit(FatalIOError);
     }
     return dr;
 }
@@ -52,11 +56,12 @@ Foam::label Foam::SPH::particleGenerator::dummyLayerCount() const
     label n = 0;
     if (dict_.readIfPresent("nDummyLayers", n))
     {
-        if (n < 1)
+        if (n < 1 || n > 100)
         {
             FatalIOErrorInFunction(dict_.lookup("nDummyLayers"))
-                << "Entry 'nDummyLayers' is " << n << "; expected at least 1"
-                << " (the layer on the wall)" << nl << exit(FatalIOError);
+                << "Entry 'nDummyLayers' is " << n << "; expected 1 (the"
+                << " layer on the wall) to 100 (a kernel support reaches a"
+                << " few spacings)" << nl << exit(FatalIOError);
         }
         return n;
     }
@@ -97,140 +102,6 @@ const Foam::dictionary& Foam::SPH::particleGenerator::patchDict
         return walls->subDict(patch);
     }
     return dict_;
-}
-
-
-void Foam::SPH::particleGenerator::checkPeriodic
-(
-    const SPH::domain& dom,
-    const wordList& patchNames,
-    const List<List<wallChain>>& patchChains
-) const
-{
-    if (!dom.anyPeriodic())
-    {
-        return;
-    }
-    const dictionary& pd = dict_.subDict("periodic");
-
-    // The lattice continues across the seam only if the period is a whole
-    // number of spacings
-    for (direction d = 0; d < 2; ++d)
-    {
-        if (!dom.periodic(d))
-        {
-            continue;
-        }
-        const scalar L = dom.period()[d];
-        const scalar n = L/dr_;
-        const scalar nLo = std::floor(n + 1e-6);
-        const scalar nHi = nLo + 1;
-        if (mag(n - std::round(n)) > 1e-6)
-        {
-            FatalIOErrorInFunction(pd)
-                << "Entry 'periodic': the period in " << SPH::domain::axisNames[d]
-                << ", max - min = " << L << ", is " << n << " spacings dr = "
-                << dr_ << "; it must be a whole number of them, so that the"
-                << " particle lattice continues across the seam." << nl
-                << "Nearest valid periods: " << nLo*dr_ << " (" << nLo
-                << " dr) or " << nHi*dr_ << " (" << nHi << " dr); or keep the"
-                << " period and take dr = " << L/max(nLo, scalar(1)) << " or "
-                << L/nHi << nl << exit(FatalIOError);
-        }
-    }
-
-    // A wall may end on a seam, never run beyond it
-    const scalar tol = 1e-6*dr_;
-    forAll(patchChains, patchi)
-    {
-        for (const wallChain& c : patchChains[patchi])
-        {
-            for (const vector2D& p : c.points)
-            {
-                for (direction d = 0; d < 2; ++d)
-                {
-                    if
-                    (
-                        dom.periodic(d)
-                     && (p[d] < dom.min()[d] - tol || p[d] > dom.max()[d] + tol)
-                    )
-                    {
-                        FatalIOErrorInFunction(patchDict(patchNames[patchi]))
-                            << "Wall patch " << patchNames[patchi] << ": point "
-                            << p << " lies outside the periodic box, "
-                            << SPH::domain::axisNames[d] << " from " << dom.min()[d]
-                            << " to " << dom.max()[d] << " (entry 'periodic' of "
-                            << "system/sphMeshDict). A wall that crosses the"
-                            << " seam ends on it and continues from its image"
-                            << " on the other side." << nl << exit(FatalIOError);
-                    }
-                }
-            }
-        }
-    }
-}
-
-
-void Foam::SPH::particleGenerator::checkSeams() const
-{
-    const SPH::domain& dom = walls_->domain();
-    if (!dom.anyPeriodic())
-    {
-        return;
-    }
-    const scalar tol = 1e-6*dr_;
-
-    const labelList ends(walls_->unmatchedSeamEnds(tol));
-    if (ends.size())
-    {
-        // Each end as the point in the box and the same point across the
-        // seam, the one the user may have written
-        auto across = [&](const vector2D& p)
-        {
-            vector2D other(p);
-            for (direction d = 0; d < 2; ++d)
-            {
-                if (dom.periodic(d) && mag(p[d] - dom.min()[d]) <= tol)
-                {
-                    other[d] += dom.period()[d];
-                }
-            }
-            return other;
-        };
-        const label v0 = ends.first();
-        const word& patch = walls_->patchNames()[walls_->pointPatch()[v0]];
-
-        FatalIOErrorInFunction(patchDict(patch))
-            << "Wall patch " << patch << " ends on a periodic seam where no"
-            << " wall continues on the other side. Wall ends on a seam with no"
-            << " partner at their image:" << nl;
-        for (const label v : ends)
-        {
-            const vector2D& p = walls_->points()[v];
-            FatalIOError
-                << "    " << walls_->patchNames()[walls_->pointPatch()[v]]
-                << " at " << p << " = " << across(p) << nl;
-        }
-        FatalIOError
-            << "A wall that crosses a periodic seam must continue from its"
-            << " image, the same point a period away (the same y on both"
-            << " sides of a seam in x), where sphMesh joins the two." << nl
-            << exit(FatalIOError);
-    }
-
-    const labelList along(walls_->seamSegments(tol));
-    if (along.size())
-    {
-        const label s = along.first();
-        const word& patch = walls_->patchNames()[walls_->segmentPatch()[s]];
-        FatalIOErrorInFunction(patchDict(patch))
-            << "Wall patch " << patch << " runs along a periodic seam (segment"
-            << " from " << walls_->points()[walls_->segments()[s].first()]
-            << " to " << walls_->points()[walls_->segments()[s].second()]
-            << "): it would lie on its own periodic image. Remove the wall"
-            << " there or the periodicity (entry 'periodic' of system/sphMeshDict"
-            << ")." << nl << exit(FatalIOError);
-    }
 }
 
 
@@ -327,11 +198,39 @@ void Foam::SPH::particleGenerator::seedFluid
     // dr/2 from the walls, less round-off
     const scalar minDist = 0.5*dr_*(1 - 1e-6);
 
+    // The box the fluid must lie in, less dr/2 (sphMeshDict's regions)
+    vector2D boxLo, boxHi;
+    fluidBox(boxLo, boxHi);
+    auto beyondBox = [&](const vector2D& p)
+    {
+        for (direction d = 0; d < 2; ++d)
+        {
+            if
+            (
+                !dom.periodic(d)
+             && (p[d] < boxLo[d] - 0.5*dr_ || p[d] > boxHi[d] + 0.5*dr_)
+            )
+            {
+                return true;
+            }
+        }
+        return false;
+    };
+
+    // Closed walls: the signed distance is 1-Lipschitz, so a point within
+    // |d(q)| - dr/2 of the last point q searched is on q's side, at least
+    // dr/2 from the walls (a margin for round-off)
+    const bool lipschitz = walls_->closedWalls();
+    const scalar margin = 1e-6*dr_;
+
     DynamicList<vector2D> pts;
     label nOutside = 0;
     vector2D example(vector2D::zero);
     for (label j = j0; j <= j1; ++j)
     {
+        bool haveQ = false;
+        vector2D q(vector2D::zero);
+        scalar dq = 0;
         for (label i = i0; i <= i1; ++i)
         {
             // Wrapped: a node a rounding below min is min itself
@@ -340,7 +239,28 @@ void Foam::SPH::particleGenerator::seedFluid
             {
                 continue;
             }
-            const scalar d = walls_->signedDistance(p);
+            if (outsideIsError && beyondBox(p))
+            {
+                if (!nOutside++) example = p;
+                continue;
+            }
+            scalar d = 0;
+            const scalar s = haveQ ? mag(dom.separation(p, q)) : GREAT;
+            if (lipschitz && haveQ && dq > 0 && dq - s >= minDist + margin)
+            {
+                d = minDist;
+            }
+            else if (lipschitz && haveQ && dq < 0 && dq + s < -minDist - margin)
+            {
+                d = -GREAT;
+            }
+            else
+            {
+                d = walls_->signedDistance(p);
+                haveQ = true;
+                q = p;
+                dq = d;
+            }
             if (d >= minDist)
             {
                 pts.append(p);
@@ -354,12 +274,17 @@ void Foam::SPH::particleGenerator::seedFluid
 
     if (outsideIsError && nOutside)
     {
+        vector2D lo, hi;
+        fluidBox(lo, hi);
         FatalIOErrorInFunction(dict_.subDict("fluid"))
             << nOutside << " lattice points of the fluid regions lie outside"
-            << " the walls, e.g. " << example << " at distance "
-            << -walls_->signedDistance(example) << " behind a wall." << nl
+            << " the walls (kept: " << pts.size() << "), e.g. " << example
+            << " at distance " << -walls_->signedDistance(example)
+            << " behind a wall (the walls' box is " << lo << " to " << hi
+            << ")." << nl
             << "The fluid must lie on the fluid side of the walls"
-            << " (check the regions and the walls' 'side')." << nl
+            << " (check the regions and the walls' 'side'); sphMesh does"
+            << " not clip it." << nl
             << exit(FatalIOError);
     }
     fluid_.transfer(pts);
@@ -375,6 +300,7 @@ Foam::SPH::particleGenerator::particleGenerator
 )
 :
     runTime_(runTime),
+    reader_(runTime.path()/runTime.system()/"sphMeshDict"),
     dict_
     (
         IOobject
@@ -388,22 +314,41 @@ Foam::SPH::particleGenerator::particleGenerator
         )
     ),
     dr_(readSpacing()),
-    wallModel_(readWallModel(runTime))
+    maxParticles_(0),
+    wallModel_(readWallModel(runTime)),
+    nLayers_(0)
 {
+    // Read: the traps back, the numbers checked
+    reader_.release();
+    sphMeshInput::checkNumbers(dict_);
+    maxParticles_ = readMaxParticles();
     Info<< "Particle spacing dr = " << dr_ << nl;
+    checkWritable();
 
     if (mesh)
     {
         const dictionary& pmDict = dict_.subOrEmptyDict("fromPolyMesh");
         const wordList patches(pmDict.getOrDefault<wordList>("wallPatches", wordList()));
         polyMeshWalls pm(*mesh, patches);
-        makeWalls(pm.patchNames(), pm.chains());
-
         vector2D lo, hi;
         pm.bounds(lo, hi);
+        checkRange(dict_, "The mesh in constant/polyMesh", lo, hi);
+        makeWalls(pm.patchNames(), pm.chains());
+        walls_->buildSearchGrid(2*dr_);
+        nLayers_ = dummyLayerCount();
+        scalar wallLength = 0;
+        forAll(walls_->segments(), s) wallLength += walls_->segmentLength(s);
+        estimateCounts
+        (
+            (hi.x() - lo.x())*(hi.y() - lo.y()), wallLength,
+            walls_->patchNames().size(), lo, hi
+        );
+
         if (dict_.found("fluid"))
         {
-            const fluidRegion regions(dict_.subDict("fluid"));
+            const dictionary& fluidDict = requireDict("fluid");
+            checkRegionNames(fluidDict);
+            const fluidRegion regions(fluidDict);
             Info<< "Fluid from the regions in " << dict_.name() << nl;
             seedFluid
             (
@@ -422,38 +367,7 @@ Foam::SPH::particleGenerator::particleGenerator
     }
     else
     {
-        // A domain periodic in x and y needs no walls
-        const FixedList<bool, 2> periodic
-        (
-            SPH::domain(dict_, vector2D::zero, vector2D::zero).periodic()
-        );
-        const dictionary& wallsDict =
-            (periodic[0] && periodic[1])
-          ? dict_.subOrEmptyDict("walls")
-          : dict_.subDict("walls");
-        wordList names(wallsDict.toc());
-        List<List<wallChain>> chains(names.size());
-        label n = 0;
-        for (const entry& e : wallsDict)
-        {
-            if (!e.isDict()) continue;
-            names[n] = e.keyword();
-            chains[n] = wallShape::New(e.keyword(), e.dict())->chains(dr_);
-            ++n;
-        }
-        names.setSize(n);
-        chains.setSize(n);
-        makeWalls(names, chains);
-
-        const fluidRegion regions(dict_.subDict("fluid"));
-        vector2D lo, hi;
-        walls_->bounds(lo, hi);
-        const vector2D margin = 0.5*(hi - lo) + vector2D(dr_, dr_);
-        seedFluid
-        (
-            [&](const vector2D& p) { return regions.contains(p); },
-            lo - margin, hi + margin, true
-        );
+        generateFromShapes();
     }
 
     if (fluid_.empty())
@@ -464,9 +378,86 @@ Foam::SPH::particleGenerator::particleGenerator
             << exit(FatalIOError);
     }
 
-    const label nLayers = dummyLayerCount();
-    Info<< "Dummy particle layers: " << nLayers << nl;
-    walls_->dummyLayers(nLayers, dr_, dummy_, dummyLayer_, dummyPatch_);
+    Info<< "Dummy particle layers: " << nLayers_ << nl;
+    walls_->dummyLayers(nLayers_, dr_, dummy_, dummyLayer_, dummyPatch_);
+}
+
+
+void Foam::SPH::particleGenerator::generateFromShapes()
+{
+    // A domain periodic in x and y needs no walls
+    const FixedList<bool, 2> periodic
+    (
+        SPH::domain(dict_, vector2D::zero, vector2D::zero).periodic()
+    );
+    if (const dictionary* pd = dict_.findDict("periodic"))
+    {
+        const vector2D lo(pd->getOrDefault<vector2D>("min", vector2D::zero));
+        const vector2D hi(pd->getOrDefault<vector2D>("max", vector2D::zero));
+        checkRange(*pd, "The periodic box", lo, hi);
+    }
+    const dictionary emptyWalls;
+    const dictionary& wallsDict =
+        (periodic[0] && periodic[1] && !dict_.found("walls"))
+      ? emptyWalls
+      : requireDict("walls");
+
+    wordList names;
+    PtrList<wallShape> shapes;
+    readShapes(wallsDict, names, shapes);
+    if (shapes.empty() && !(periodic[0] && periodic[1]))
+    {
+        FatalIOErrorInFunction(wallsDict)
+            << "No wall patch in walls: at least one is needed, unless the"
+            << " domain is periodic in x and y (entry 'periodic')" << nl
+            << exit(FatalIOError);
+    }
+
+    const dictionary& fluidDict = requireDict("fluid");
+    checkRegionNames(fluidDict);
+    const fluidRegion regions(fluidDict);
+    const boundBox2D fb(regions.bounds());
+    checkRange(fluidDict, "The fluid", fb.min(), fb.max());
+    if (dict_.found("latticeOrigin"))
+    {
+        const vector2D o(dict_.get<vector2D>("latticeOrigin"));
+        checkRange(dict_, "Entry 'latticeOrigin'", o, o);
+    }
+
+    // The counts before anything is split or seeded
+    nLayers_ = dummyLayerCount();
+    scalar fluidArea = 0, wallLength = 0;
+    forAll(regions.regions(), i)
+    {
+        if (regions.operations()[i] == fluidRegion::operation::add)
+        {
+            fluidArea += regions.regions()[i].area();
+        }
+    }
+    for (const wallShape& w : shapes)
+    {
+        wallLength += w.length();
+    }
+    estimateCounts(fluidArea, wallLength, shapes.size(), fb.min(), fb.max());
+
+    List<List<wallChain>> chains(shapes.size());
+    forAll(shapes, i)
+    {
+        chains[i] = shapes[i].chains(dr_);
+    }
+    makeWalls(names, chains);
+    walls_->buildSearchGrid(2*dr_);
+    checkCrossings();
+    checkRegions(regions);
+
+    // The lattice over the fluid's box, a spacing more each side: every
+    // point of the fluid is seeded or counted as outside the walls
+    const vector2D grow(dr_, dr_);
+    seedFluid
+    (
+        [&](const vector2D& p) { return regions.contains(p); },
+        fb.min() - grow, fb.max() + grow, true
+    );
 }
 
 
@@ -491,31 +482,6 @@ void Foam::SPH::particleGenerator::report() const
             << setw(10) << nDummy[i] << nl;
     }
     Info<< endl;
-}
-
-
-void Foam::SPH::particleGenerator::write() const
-{
-    const word inst = runTime_.constant();
-
-    particles fluid(runTime_, inst, "sphMesh/fluid", false);
-    fluid.resize(fluid_.size());
-    fluid.positions() = fluid_;
-    fluid.write();
-
-    particles dummy(runTime_, inst, "sphMesh/dummy", false);
-    dummy.add<label>("layer");
-    dummy.add<label>("patch");
-    dummy.resize(dummy_.size());
-    dummy.positions() = dummy_;
-    dummy.field<label>("layer") = dummyLayer_;
-    dummy.field<label>("patch") = dummyPatch_;
-    dummy.write();
-
-    walls_->write(runTime_);
-    walls_->domain().write(runTime_);
-
-    Info<< "Written " << runTime_.path()/inst/"sphMesh" << nl;
 }
 
 

@@ -43,6 +43,7 @@ void Foam::SPH::dummyRepulsiveWallModel::wallParticles
     DynamicList<label>& patch
 ) const
 {
+    checkMesh(runTime);
     particles dummy(runTime, runTime.constant(), "sphMesh/dummy", false);
     dummy.add<label>("layer");
     dummy.add<label>("patch");

@@ -23,13 +23,14 @@ namespace SPH
 
 void Foam::SPH::usawWallModel::wallParticles
 (
-    const Time&,
+    const Time& runTime,
     const wallMesh& walls,
     DynamicList<vector2D>& x,
     DynamicList<label>& type,
     DynamicList<label>& patch
 ) const
 {
+    checkMesh(runTime);
     forAll(walls.points(), v)
     {
         x.append(walls.points()[v]);

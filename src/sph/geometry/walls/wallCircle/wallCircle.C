@@ -27,7 +27,8 @@ Foam::SPH::wallCircle::wallCircle(const word& name, const dictionary& dict)
     closed_(dict.get<word>("type") != "arc"),
     fluidInside_(readSide("inside", "outside"))
 {
-    if (radius_ <= 0)
+    // Written as !(> 0) so that a NaN radius is refused too
+    if (!(radius_ > 0))
     {
         FatalIOErrorInFunction(dict.lookup("radius"))
             << "Wall patch " << name << ": radius " << radius_
@@ -38,12 +39,36 @@ Foam::SPH::wallCircle::wallCircle(const word& name, const dictionary& dict)
         const scalar deg = constant::mathematical::pi/180;
         start_ = deg*dict.get<scalar>("startAngle");
         end_ = deg*dict.get<scalar>("endAngle");
-        if (end_ <= start_ || end_ - start_ > constant::mathematical::twoPi)
+        if (!(end_ > start_) || !(end_ - start_ <= constant::mathematical::twoPi))
         {
             FatalIOErrorInFunction(dict)
                 << "Wall patch " << name << ": endAngle must exceed startAngle"
                 << " by at most 360 degrees" << nl << exit(FatalIOError);
         }
+    }
+}
+
+
+void Foam::SPH::wallCircle::checkSpacing(const scalar dr) const
+{
+    if (closed_ && radius_ < 0.5*dr)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Wall patch " << name_ << ": radius " << radius_ << " is less"
+            << " than half the spacing dr = " << dr << "; a circle needs a"
+            << " radius of at least dr/2 to be made of particles" << nl
+            << exit(FatalIOError);
+    }
+    if (!closed_ && length() < dr)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Wall patch " << name_ << ": the arc from startAngle "
+            << start_*180/constant::mathematical::pi << " to endAngle "
+            << end_*180/constant::mathematical::pi << " degrees of radius "
+            << radius_ << " is " << length() << " long, less than one spacing"
+            << " dr = " << dr << "; an arc must be at least dr long (an angle"
+            << " of at least " << dr/radius_*180/constant::mathematical::pi
+            << " degrees)" << nl << exit(FatalIOError);
     }
 }
 

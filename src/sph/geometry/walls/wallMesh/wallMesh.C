@@ -335,31 +335,6 @@ Foam::vector2D Foam::SPH::wallMesh::segmentVector(label s) const
 }
 
 
-Foam::scalar Foam::SPH::wallMesh::signedDistance(const vector2D& p) const
-{
-    scalar best = GREAT;
-    scalar sign = 1;
-    forAll(segments_, s)
-    {
-        // The image of the segment nearest p
-        const vector2D a(domain_.image(points_[segments_[s].first()], p));
-        const vector2D ab(segmentVector(s));
-        const scalar t = min(max(((p - a) & ab)/magSqr(ab), 0.0), 1.0);
-        const vector2D d = p - (a + t*ab);
-        const scalar dist = mag(d);
-        if (dist < best)
-        {
-            best = dist;
-            vector2D n = segmentNormals_[s];
-            if (t <= 0) n = pointNormals_[segments_[s].first()];
-            else if (t >= 1) n = pointNormals_[segments_[s].second()];
-            sign = ((d & n) >= 0) ? 1 : -1;
-        }
-    }
-    return sign*best;
-}
-
-
 void Foam::SPH::wallMesh::bounds(vector2D& lo, vector2D& hi) const
 {
     lo = vector2D(GREAT, GREAT);
@@ -692,12 +667,16 @@ void Foam::SPH::wallMesh::patchCounts(labelList& nPoints, labelList& nSegments) 
 }
 
 
-void Foam::SPH::wallMesh::write(const objectRegistry& db) const
+void Foam::SPH::wallMesh::write
+(
+    const objectRegistry& db,
+    const fileName& local
+) const
 {
     const word inst = db.time().constant();
     auto io = [&](const word& name)
     {
-        return IOobject(name, inst, wallsLocal, db, IOobject::NO_READ,
+        return IOobject(name, inst, local/"walls", db, IOobject::NO_READ,
                         IOobject::NO_WRITE, false);
     };
 

@@ -4,6 +4,7 @@
 
 #include "wallPolygon.H"
 #include "addToRunTimeSelectionTable.H"
+#include "polygon.H"
 
 namespace Foam
 {
@@ -59,6 +60,16 @@ Foam::SPH::wallPolygon::wallPolygon(const word& name, const dictionary& dict)
 {
     checkEdges(points_, true);
 
+    // The fluid region's test: at least 3 distinct corners, edges that meet
+    // only at the corners between neighbours, some area
+    const string why(polygon::problem(points_));
+    if (!why.empty())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Wall patch " << name_ << ", entry points: " << why.c_str()
+            << nl << exit(FatalIOError);
+    }
+
     const scalar a2 = signedArea2(points_);
     if (mag(a2) <= SMALL)
     {
@@ -82,6 +93,18 @@ Foam::List<Foam::SPH::wallChain> Foam::SPH::wallPolygon::chains(const scalar) co
     c.points = points_;
     c.closed = true;
     return List<wallChain>(1, c);
+}
+
+
+Foam::scalar Foam::SPH::wallPolygon::length() const
+{
+    return chainLength(points_, true);
+}
+
+
+void Foam::SPH::wallPolygon::bounds(vector2D& lo, vector2D& hi) const
+{
+    pointBounds(points_, lo, hi);
 }
 
 

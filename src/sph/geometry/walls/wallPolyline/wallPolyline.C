@@ -38,4 +38,16 @@ Foam::List<Foam::SPH::wallChain> Foam::SPH::wallPolyline::chains(const scalar) c
 }
 
 
+Foam::scalar Foam::SPH::wallPolyline::length() const
+{
+    return chainLength(points_, false);
+}
+
+
+void Foam::SPH::wallPolyline::bounds(vector2D& lo, vector2D& hi) const
+{
+    pointBounds(points_, lo, hi);
+}
+
+
 // ************************************************************************* //

@@ -82,4 +82,37 @@ void Foam::SPH::wallShape::checkEdges
 }
 
 
+Foam::scalar Foam::SPH::wallShape::chainLength
+(
+    const UList<vector2D>& pts,
+    bool closed
+)
+{
+    scalar L = 0;
+    const label nEdges = closed ? pts.size() : pts.size() - 1;
+    for (label i = 0; i < nEdges; ++i)
+    {
+        L += mag(pts[(i + 1) % pts.size()] - pts[i]);
+    }
+    return L;
+}
+
+
+void Foam::SPH::wallShape::pointBounds
+(
+    const UList<vector2D>& pts,
+    vector2D& lo,
+    vector2D& hi
+)
+{
+    lo = vector2D(VGREAT, VGREAT);
+    hi = vector2D(-VGREAT, -VGREAT);
+    for (const vector2D& p : pts)
+    {
+        lo = min(lo, p);
+        hi = max(hi, p);
+    }
+}
+
+
 // ************************************************************************* //
