@@ -9,6 +9,31 @@
 #include <cstdio>
 #include <sys/statvfs.h>
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Copy what 'from' holds and 'to' does not (the initial fields of 0/
+//- when the last good state is the start time): a rewrite adds, as
+//- OpenFOAM's writes into an existing time do, and never drops a file
+void keepOthers(const Foam::fileName& from, const Foam::fileName& to)
+{
+    using namespace Foam;
+    for (const fileName& f : readDir(from, fileName::FILE, false, false))
+    {
+        if (!exists(to/f, false)) cp(from/f, to/f);
+    }
+    for (const fileName& d : readDir(from, fileName::DIRECTORY, false, false))
+    {
+        if (!isDir(to/d)) cp(from/d, to/d);
+        else keepOthers(from/d, to/d);
+    }
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::word Foam::SPH::atomicTimeDirectory::suffix(".writing");
@@ -125,14 +150,20 @@ void Foam::SPH::atomicTimeDirectory::commit()
 {
     restoreCase();
     const fileName written(staging_/name_);
+    if (isDir(final_) && isDir(written))
+    {
+        keepOthers(final_, written);
+    }
     if (!isDir(written) || !fileSync::syncTree(written))
     {
         fail("syncing " + written + " failed: " + fileSync::lastError());
     }
     if (isDir(final_))
     {
-        // Written before (the last good state at its own write time): swap
-        // in one step; the old one goes with the .writing folder
+        // Written before (the last good state at its own write time, or
+        // the start time's initial fields): swap in one step, everything
+        // else it held copied in first; the old one goes with the .writing
+        // folder
         if (!fileSync::exchange(written, final_))
         {
             fail("replacing it failed: " + fileSync::lastError());
