@@ -127,7 +127,7 @@ TEST(killDuringWrite, everyTimeLeftIsCompleteAndTheLatestRestarts)
         setEntry
         (
             dir/"system"/"controlDict", "endTime",
-            std::to_string(std::stod(times.back()) + 0.002)
+            std::to_string(std::stod(times.back()) + 0.1)
         );
         EXPECT_EQ(run(exe, out), 0) << sphTest::logTail(out);
         EXPECT_NE(out.find("Restarting from"), std::string::npos)
