@@ -42,6 +42,61 @@ namespace
         }
         SPH::checkNumber(dict, key, interval, {0, VGREAT, true});
     }
+
+    //- endTime: not before the start, reachable by the fixed step, and
+    //- after at least one step (Time::run() runs while t < endTime - dt/2)
+    void checkEndTime(const Time& runTime, const dictionary& dict, const scalar deltaT)
+    {
+        const word stopAt(dict.getOrDefault<word>("stopAt", "endTime"));
+        if (stopAt == "endTime" || dict.found("endTime"))
+        {
+            const scalar tEnd = SPH::checkedScalar(dict, "endTime", {-VGREAT, VGREAT});
+            const scalar tStart = runTime.value();
+            if (tEnd < tStart && stopAt == "endTime")
+            {
+                FatalIOErrorInFunction(dict.lookup("endTime"))
+                    << "Entry endTime " << tEnd << ": before the start time "
+                    << tStart << " (startFrom "
+                    << dict.getOrDefault<word>("startFrom", "latestTime")
+                    << "): expected endTime > " << tStart << exit(FatalIOError);
+            }
+            // A fixed step so small that the run would never end (or stop
+            // advancing the time when t + deltaT rounds to t)
+            const scalar nSteps = (tEnd - tStart)/deltaT;
+            if
+            (
+                stopAt == "endTime" && nSteps > 1e10
+             && !dict.getOrDefault<bool>("adjustTimeStep", false)
+            )
+            {
+                FatalIOErrorInFunction(dict.lookup("deltaT"))
+                    << "Entry deltaT " << deltaT << ": " << nSteps << " fixed"
+                    << " steps from " << tStart << " to endTime " << tEnd
+                    << " (more than 1e10)" << exit(FatalIOError);
+            }
+            // Time::run() runs while t < endTime - deltaT/2: a larger first
+            // step would end the run before it starts, without a word
+            const scalar dt0 = runTime.deltaTValue();
+            if (stopAt == "endTime" && tEnd > tStart && !(tStart < tEnd - 0.5*dt0))
+            {
+                FatalIOErrorInFunction(dict.lookup("deltaT"))
+                    << "Entry deltaT " << dt0
+                    << (
+                           runTime.timeIndex() > 0
+                         ? " (the last step, from uniform/time of the start time)"
+                         : ""
+                       )
+                    << ": not less than twice the time from the start "
+                    << tStart << " to endTime " << tEnd
+                    << ", so no step would run" << exit(FatalIOError);
+            }
+            if (tEnd == tStart && stopAt == "endTime")
+            {
+                Info<< "endTime " << tEnd << " in " << dict.name()
+                    << " is the start time: nothing to do" << nl << endl;
+            }
+        }
+    }
 }
 
 
@@ -59,49 +114,7 @@ void Foam::SPH::checkTimeControls(const Time& runTime)
             << " time " << runTime.value() << exit(FatalIOError);
     }
 
-    const word stopAt(dict.getOrDefault<word>("stopAt", "endTime"));
-    if (stopAt == "endTime" || dict.found("endTime"))
-    {
-        const scalar tEnd = checkedScalar(dict, "endTime", {-VGREAT, VGREAT});
-        const scalar tStart = runTime.value();
-        if (tEnd < tStart && stopAt == "endTime")
-        {
-            FatalIOErrorInFunction(dict.lookup("endTime"))
-                << "Entry endTime " << tEnd << ": before the start time "
-                << tStart << " (startFrom "
-                << dict.getOrDefault<word>("startFrom", "latestTime")
-                << "): expected endTime > " << tStart << exit(FatalIOError);
-        }
-        // A fixed step so small that the run would never end (or stop
-        // advancing the time when t + deltaT rounds to t)
-        const scalar nSteps = (tEnd - tStart)/deltaT;
-        if
-        (
-            stopAt == "endTime" && nSteps > 1e10
-         && !dict.getOrDefault<bool>("adjustTimeStep", false)
-        )
-        {
-            FatalIOErrorInFunction(dict.lookup("deltaT"))
-                << "Entry deltaT " << deltaT << ": " << nSteps << " fixed"
-                << " steps from " << tStart << " to endTime " << tEnd
-                << " (more than 1e10)" << exit(FatalIOError);
-        }
-        // Time::run() runs while t < endTime - deltaT/2: a larger first
-        // step would end the run before it starts, without a word
-        const scalar dt0 = runTime.deltaTValue();
-        if (stopAt == "endTime" && tEnd > tStart && !(tStart < tEnd - 0.5*dt0))
-        {
-            FatalIOErrorInFunction(dict.lookup("deltaT"))
-                << "Entry deltaT " << dt0 << ": not less than twice the time"
-                << " from the start " << tStart << " to endTime " << tEnd
-                << ", so no step would run" << exit(FatalIOError);
-        }
-        if (tEnd == tStart && stopAt == "endTime")
-        {
-            Info<< "endTime " << tEnd << " in " << dict.name()
-                << " is the start time: nothing to do" << nl << endl;
-        }
-    }
+    checkEndTime(runTime, dict, deltaT);
 
     checkWriteControls(dict);
 
