@@ -227,6 +227,7 @@ void registeredFieldCase()
     {
         auto runTime = sphTest::makeTime(dir);
         EXPECT_EQ(runTime->timeName(), "0.4");
+        SPH::timeLoop::prepareStart(*runTime, "passiveScalarState");
         passiveScalar solver(*runTime, -1);
         SPH::timeLoop(*runTime, solver).run();
     }

@@ -3,34 +3,24 @@
 \*---------------------------------------------------------------------------*/
 
 #include "stepDisplacement.H"
+#include "checkedEntry.H"
 #include "IOdictionary.H"
 
 #include <cmath>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::SPH::stepDisplacement::stepDisplacement(const Time& runTime)
+Foam::SPH::stepDisplacement::stepDisplacement(const dictionary& schemes)
 :
     maxByH_(1),
     reached_(-1),
     tReached_(0)
 {
-    const IOdictionary schemes
+    maxByH_ = checkedScalar
     (
-        IOobject
-        (
-            "sphSchemes", runTime.system(), runTime,
-            IOobject::MUST_READ, IOobject::NO_WRITE, false
-        )
+        schemes, "maxStepDisplacement", maxByH_, {0, VGREAT, true},
+        "in h: the largest move of a particle in one step"
     );
-    maxByH_ = schemes.getOrDefault<scalar>("maxStepDisplacement", maxByH_);
-    if (!(maxByH_ > 0 && std::isfinite(maxByH_)))
-    {
-        FatalIOErrorInFunction(schemes)
-            << "Entry maxStepDisplacement " << maxByH_ << ": expected a"
-            << " length in h > 0 (the largest move of a particle in one step)"
-            << exit(FatalIOError);
-    }
 }
 
 

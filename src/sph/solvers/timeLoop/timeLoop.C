@@ -4,6 +4,7 @@
 
 #include "timeLoop.H"
 #include "timeClock.H"
+#include "checkedEntry.H"
 #include "atomicTimeDirectory.H"
 #include "wallCrossing.H"
 #include "IOdictionary.H"
@@ -20,30 +21,28 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
 :
     runTime_(runTime),
     solver_(solver),
-    minDeltaTFraction_(1e-3),
-    deltaT0_(-1),
-    lastDeltaT_(-1),
-    lastDeltaTStart_(-1),
-    timeStart_(runTime.value()),
-    purgeWrite_(timeClock::takeOverPurgeWrite(runTime))
-{
-    checkTimeControls(runTime);
-    const IOdictionary schemes
+    schemes_
     (
         IOobject
         (
             "sphSchemes", runTime.system(), runTime,
             IOobject::MUST_READ, IOobject::NO_WRITE, false
         )
+    ),
+    minDeltaTFraction_(1e-3),
+    deltaT0_(-1),
+    lastDeltaT_(-1),
+    lastDeltaTStart_(-1),
+    timeStart_(runTime.value()),
+    purgeWrite_(timeClock::takeOverPurgeWrite(runTime)),
+    displacement_(schemes_)
+{
+    checkTimeControls(runTime);
+    minDeltaTFraction_ = checkedScalar
+    (
+        schemes_, "minDeltaTFraction", minDeltaTFraction_, {0, 1, false, true},
+        "of the first time step, below which a step has collapsed"
     );
-    minDeltaTFraction_ =
-        schemes.getOrDefault<scalar>("minDeltaTFraction", minDeltaTFraction_);
-    if (!(minDeltaTFraction_ >= 0 && minDeltaTFraction_ < 1))
-    {
-        FatalIOErrorInFunction(schemes)
-            << "Entry minDeltaTFraction " << minDeltaTFraction_
-            << ": expected 0 <= minDeltaTFraction < 1" << exit(FatalIOError);
-    }
     readState();
 }
 
@@ -68,7 +67,6 @@ void Foam::SPH::timeLoop::readState()
     }
     const IOdictionary state(io);
     lastDeltaT_ = state.getOrDefault<scalar>("deltaT", -1);
-    timeClock::restore(runTime_, state);
     timeStart_ = runTime_.value();
     solver_.readState(state);
 }

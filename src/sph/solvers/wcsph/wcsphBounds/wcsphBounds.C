@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wcsphBounds.H"
+#include "checkedEntry.H"
 
 #include <cmath>
 
@@ -27,12 +28,21 @@ Foam::SPH::wcsphBounds::wcsphBounds
     work_(work),
     rhoMin_(0.8),
     rhoMax_(1.25),
-    maxMach_(schemes.getOrDefault<scalar>("maxMach", 0.3)),
+    maxMach_
+    (
+        checkedScalar
+        (
+            schemes, "maxMach", 0.3, {0, VGREAT, true},
+            "the largest max|U|/c0 of a weakly compressible flow"
+        )
+    ),
     onMach_
     (
         machActionNames.getOrDefault("onMachExceeded", schemes, machAction::warn)
     ),
     warned_(false),
+    iMin_(-1), iMax_(-1), iFast_(-1),
+    extremesKnown_(false),
     rhoMinReached_(VGREAT), tRhoMin_(0),
     rhoMaxReached_(-VGREAT), tRhoMax_(0),
     machReached_(0), tMach_(0)
@@ -53,13 +63,6 @@ Foam::SPH::wcsphBounds::wcsphBounds
                 << "): expected (min max) of rho/rho0 with 0 <= min < 1 < max"
                 << exit(FatalIOError);
         }
-    }
-    if (!(maxMach_ > 0 && std::isfinite(maxMach_)))
-    {
-        FatalIOErrorInFunction(schemes)
-            << "Entry maxMach " << maxMach_ << ": expected a number > 0 (the"
-            << " largest max|U|/c0 of a weakly compressible flow)"
-            << exit(FatalIOError);
     }
 }
 
@@ -123,24 +126,28 @@ Foam::label Foam::SPH::wcsphBounds::find(string& what) const
 {
     if (!work_.nFluid) return -1;
 
-    label iMin, iMax, iFast;
-    extremes(iMin, iMax, iFast);
+    extremes(iMin_, iMax_, iFast_);
+    extremesKnown_ = true;
+    const label iMin = iMin_, iMax = iMax_, iFast = iFast_;
     const scalarField& rho = work_.parts.field<scalar>("rho");
     const scalar rho0 = work_.rho0;
-    const string band =
-        ", outside densityBounds (" + Foam::name(rhoMin_) + " "
-      + Foam::name(rhoMax_) + ") of system/sphSchemes: the equation of state"
-        " is out of its weakly compressible range, at";
+    auto outside = [&](const label i)
+    {
+        what =
+            "Density " + density(rho[i]) + ", outside densityBounds ("
+          + Foam::name(rhoMin_) + " " + Foam::name(rhoMax_) + ") of"
+            " system/sphSchemes: the equation of state is out of its weakly"
+            " compressible range, at";
+        return i;
+    };
 
     if (rho[iMin] < rhoMin_*rho0)
     {
-        what = "Density " + density(rho[iMin]) + band;
-        return iMin;
+        return outside(iMin);
     }
     if (rho[iMax] > rhoMax_*rho0)
     {
-        what = "Density " + density(rho[iMax]) + band;
-        return iMax;
+        return outside(iMax);
     }
     const scalar speed = mag(work_.parts.field<vector2D>("U")[iFast]);
     if (onMach_ == machAction::stop && speed > maxMach_*work_.c0)
@@ -156,6 +163,7 @@ void Foam::SPH::wcsphBounds::checkStart(const word& timeName) const
 {
     string what;
     const label i = find(what);
+    extremesKnown_ = false;
     if (i < 0) return;
     const vector2D& x = work_.parts.positions()[i];
     FatalErrorInFunction
@@ -173,8 +181,12 @@ void Foam::SPH::wcsphBounds::afterStep(const Time& runTime)
 {
     if (!work_.nFluid) return;
 
-    label iMin, iMax, iFast;
-    extremes(iMin, iMax, iFast);
+    if (!extremesKnown_)
+    {
+        extremes(iMin_, iMax_, iFast_);
+    }
+    extremesKnown_ = false;
+    const label iMin = iMin_, iMax = iMax_, iFast = iFast_;
     const scalarField& rho = work_.parts.field<scalar>("rho");
     const scalar t = runTime.value();
     if (rho[iMin] < rhoMinReached_*work_.rho0)
