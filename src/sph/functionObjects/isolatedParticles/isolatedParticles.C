@@ -29,8 +29,8 @@ void Foam::SPH::functionObjects::isolatedParticles::writeFileHeader
 ) const
 {
     writeHeader(os, "Isolated and sparse fluid particles");
-    writeHeaderValue(os, "isolatedRadius", Foam::name(isolatedRadius_) + " dr");
-    writeHeaderValue(os, "sparseRadius", Foam::name(sparseRadius_) + " dr");
+    writeHeaderValue(os, "isolatedRadius [dr]", isolatedRadius_);
+    writeHeaderValue(os, "sparseRadius [dr]", sparseRadius_);
     writeHeaderValue(os, "minNeighbours", minNeighbours_);
     writeHeader(os, "");
     writeCommented(os, "Time");
