@@ -6,7 +6,7 @@ Description
     runs it: Allrun -test takes isphFoam and wcsphFoam (USAW walls) at
     dr = 2 cm, and interFoam, to t = 0.3 s (t+ = 0.94), just past the
     water's arrival at the wedge. Both SPH runs must end (End in the log)
-    and the water must reach the wedge's left side (force above 1 N/m) in
+    and the water must reach the wedge's left side (force above 10 N/m) in
     t+ = 0.8 to 1.0 in both, within 0.05 of each other: the surge front
     over the 0.61 m from the column to the wedge's foot, which the two
     methods agree on to a few steps (measured: 0.900 and 0.890, the
