@@ -15,7 +15,7 @@ Description
     interFoam (2 cm cells, the wedge cut out in steps) must end and reach
     the wedge within 0.05 of isphFoam too (measured 0.929: its front is
     known to a cell, 2 cm of the 0.61 m run, about 0.03 in t+).
-    130 s on a machine shared with two other jobs (36 s of CPU).
+    66 to 130 s on a machine shared with two other jobs (about 36 s of CPU).
 
 \*---------------------------------------------------------------------------*/
 
