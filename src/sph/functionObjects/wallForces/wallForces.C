@@ -4,6 +4,8 @@
 
 #include "wallForces.H"
 #include "shepardInterpolation.H"
+#include "fluidProperties.H"
+#include "kernelDispatch.H"
 #include "Time.H"
 #include "HashSet.H"
 #include "addToRunTimeSelectionTable.H"
@@ -83,19 +85,91 @@ void Foam::SPH::functionObjects::wallForces::writeFileHeader
 void Foam::SPH::functionObjects::wallForces::writeRow
 (
     Ostream& os,
-    const vector& total
+    const vector& pressure,
+    const vector& viscous
 ) const
 {
-    // Pressure only: the total is the pressure part, viscous is not
-    // computed
     writeCurrentTime(os);
-    os  << tab << total << tab << total << tab << vector::zero << endl;
+    os  << tab << (pressure + viscous) << tab << pressure << tab << viscous
+        << endl;
+}
+
+
+bool Foam::SPH::functionObjects::wallForces::hasVertexParticles() const
+{
+    const sphCloud& c = cloud();
+    const label nPoints = c.walls().points().size();
+    if (nPoints == 0 || c.size() - c.nFluid() != nPoints)
+    {
+        return false;
+    }
+    const labelField& type = c.parts().field<label>("type");
+    for (label k = c.nFluid(); k < c.size(); ++k)
+    {
+        if (type[k] != label(particleKind::wallVertex))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+Foam::tensor2D Foam::SPH::functionObjects::wallForces::vertexGradient
+(
+    const label v
+) const
+{
+    const sphCloud& c = cloud();
+    const label nFluid = c.nFluid();
+    const scalar m = c.mass();
+    const scalar* rho = c.parts().field<scalar>("rho").cdata();
+    const vector2D* U = c.parts().field<vector2D>("U").cdata();
+    const vector2D& xv = c.walls().points()[v];
+    const vector2D& uv = U[nFluid + v];
+
+    // Sums over the fluid particles b of V_b grad w_vb (x) (u_b - u_v) and
+    // of V_b grad w_vb (x) (x_b - x_v); rvb = x_v - x_b (minimum image)
+    tensor2D G(Zero);
+    tensor2D M(Zero);
+    dispatch(c.W(), [&](const auto& K)
+    {
+        c.cells().forEachNeighbour
+        (
+            xv,
+            K.support(),
+            [&](const label b, const vector2D& rvb, const scalar r2)
+            {
+                if (b < nFluid)
+                {
+                    const vector2D dW(m/rho[b]*K.gradW(rvb, std::sqrt(r2)));
+                    G += dW*(U[b] - uv);
+                    M -= dW*rvb;
+                }
+            }
+        );
+    });
+
+    if (renormalise_)
+    {
+        // Too few neighbours to span the plane: no gradient to read
+        return mag(det(M)) > SMALL ? (inv(M) & G) : tensor2D(Zero);
+    }
+    const scalar gammaV = usawPtr_->gammaAt(xv);
+    return gammaV > SMALL ? G/gammaV : tensor2D(Zero);
 }
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
 void Foam::SPH::functionObjects::wallForces::measure()
+{
+    measurePressure();
+    measureViscous();
+}
+
+
+void Foam::SPH::functionObjects::wallForces::measurePressure()
 {
     const sphCloud& c = cloud();
     const wallMesh& walls = c.walls();
@@ -105,8 +179,8 @@ void Foam::SPH::functionObjects::wallForces::measure()
 
     shepardInterpolation interp(c);
 
-    force_ = vector2D::zero;
-    moment_ = 0;
+    pressureForce_ = vector2D::zero;
+    pressureMoment_ = 0;
     nSegments_ = 0;
     nDry_ = 0;
 
@@ -131,8 +205,12 @@ void Foam::SPH::functionObjects::wallForces::measure()
             continue;
         }
 
+        // USAW: the segment value of eq. (69), the mean of its vertex
+        // particles' pressures (which the solvers compute at the wall)
         const scalar pMid =
-            hydrostatic_
+            vertexPressure_
+          ? 0.5*(p[c.nFluid() + ends.first()] + p[c.nFluid() + ends.second()])
+          : hydrostatic_
           ? interp.hydrostaticPressure(minFraction_)
           : interp.interpolate(p, minFraction_);
 
@@ -140,16 +218,80 @@ void Foam::SPH::functionObjects::wallForces::measure()
         const vector2D dF = -pMid*walls.segmentLength(s)*walls.segmentNormals()[s];
         const vector2D arm = mid - CofR_;
 
-        force_ += dF;
-        moment_ += arm.x()*dF.y() - arm.y()*dF.x();
+        pressureForce_ += dF;
+        pressureMoment_ += arm.x()*dF.y() - arm.y()*dF.x();
+    }
+}
+
+
+void Foam::SPH::functionObjects::wallForces::measureViscous()
+{
+    viscousForce_ = vector2D::zero;
+    viscousMoment_ = 0;
+    if (!usawPtr_.valid())
+    {
+        return;
+    }
+
+    const sphCloud& c = cloud();
+    const wallMesh& walls = c.walls();
+    const labelHashSet selected(patches_);
+
+    // Moving walls: gamma at the vertices where they are now
+    usawPtr_->updateGeometry(walls.points());
+
+    // Each vertex's gradient once, although two segments share it
+    Map<tensor2D> vertexGrad;
+    auto gradAt = [&](const label v) -> tensor2D
+    {
+        if (!vertexGrad.found(v))
+        {
+            vertexGrad.insert(v, vertexGradient(v));
+        }
+        return vertexGrad[v];
+    };
+
+    shepardInterpolation interp(c);
+
+    forAll(walls.segments(), s)
+    {
+        if (!selected.found(walls.segmentPatch()[s]))
+        {
+            continue;
+        }
+        const labelPair& ends = walls.segments()[s];
+        const vector2D mid
+        (
+            0.5*(walls.points()[ends.first()] + walls.points()[ends.second()])
+        );
+        interp.setPoint(mid);
+        if (!interp.wet(minFraction_))
+        {
+            continue;
+        }
+
+        // Eq. (70): the mean of the two vertex gradients; eq. (69): the
+        // viscous stress on the wall, whose normal points into the fluid
+        const tensor2D gradU
+        (
+            0.5*(gradAt(ends.first()) + gradAt(ends.second()))
+        );
+        const vector2D& n = walls.segmentNormals()[s];
+        const vector2D dF =
+            mu_*((gradU + gradU.T()) & n)*walls.segmentLength(s);
+        const vector2D arm = mid - CofR_;
+
+        viscousForce_ += dF;
+        viscousMoment_ += arm.x()*dF.y() - arm.y()*dF.x();
     }
 }
 
 
 void Foam::SPH::functionObjects::wallForces::writeLog() const
 {
-    Info<< "    wallForces " << name() << ": force " << force_
-        << ", moment " << moment_ << " about " << CofR_
+    Info<< "    wallForces " << name() << ": force " << force()
+        << " (pressure " << pressureForce_ << ", viscous " << viscousForce_
+        << "), moment " << moment() << " about " << CofR_
         << " (" << nDry_ << " of " << nSegments_ << " segments dry)" << endl;
 }
 
@@ -167,8 +309,58 @@ void Foam::SPH::functionObjects::wallForces::writeFiles()
         writeFileHeader(momentFilePtr_(), "Moment");
     }
 
-    writeRow(file(), vector(force_.x(), force_.y(), 0));
-    writeRow(momentFilePtr_(), vector(0, 0, moment_));
+    writeRow
+    (
+        file(),
+        vector(pressureForce_.x(), pressureForce_.y(), 0),
+        vector(viscousForce_.x(), viscousForce_.y(), 0)
+    );
+    writeRow
+    (
+        momentFilePtr_(),
+        vector(0, 0, pressureMoment_),
+        vector(0, 0, viscousMoment_)
+    );
+}
+
+
+void Foam::SPH::functionObjects::wallForces::readViscous
+(
+    const dictionary& dict
+)
+{
+    const word scheme(dict.lookupOrDefault<word>("wallGradient", "gamma"));
+    if (scheme != "gamma" && scheme != "renormalised")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Function object " << name() << ": wallGradient " << scheme
+            << ", expected gamma or renormalised"
+            << exit(FatalIOError);
+    }
+    renormalise_ = (scheme == "renormalised");
+
+    const word pressure
+    (
+        dict.lookupOrDefault<word>("wallPressure", "vertices")
+    );
+    if (pressure != "vertices" && pressure != "shepard")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Function object " << name() << ": wallPressure " << pressure
+            << ", expected vertices or shepard"
+            << exit(FatalIOError);
+    }
+
+    // The viscous part needs the wall velocity at the vertices: USAW only
+    usawPtr_.clear();
+    if (hasVertexParticles())
+    {
+        const sphCloud& c = cloud();
+        const fluidProperties props(time_);
+        mu_ = props.rho0*props.nu;
+        usawPtr_.reset(new usawWalls(c.walls(), c.W(), c.nFluid(), c.dom()));
+    }
+    vertexPressure_ = usawPtr_.valid() && pressure == "vertices";
 }
 
 
@@ -187,8 +379,14 @@ Foam::SPH::functionObjects::wallForces::wallForces
     CofR_(vector2D::zero),
     minFraction_(0.1),
     hydrostatic_(false),
-    force_(vector2D::zero),
-    moment_(0),
+    vertexPressure_(false),
+    renormalise_(false),
+    mu_(0),
+    usawPtr_(),
+    pressureForce_(vector2D::zero),
+    viscousForce_(vector2D::zero),
+    pressureMoment_(0),
+    viscousMoment_(0),
     nSegments_(0),
     nDry_(0),
     momentFilePtr_()
@@ -217,6 +415,7 @@ bool Foam::SPH::functionObjects::wallForces::read(const dictionary& dict)
             << exit(FatalIOError);
     }
     hydrostatic_ = dict.lookupOrDefault<bool>("hydrostatic", false);
+    readViscous(dict);
 
     wordList selectedNames(patches_.size());
     forAll(patches_, i)
@@ -226,6 +425,18 @@ bool Foam::SPH::functionObjects::wallForces::read(const dictionary& dict)
     Info<< type() << ' ' << name() << ": patches " << inParentheses(selectedNames)
         << ", CofR " << CofR_ << ", minFluidFraction " << minFraction_
         << (hydrostatic_ ? ", hydrostatic pressure" : "") << endl;
+    if (usawPtr_.valid())
+    {
+        Info<< "    wall pressure: "
+            << (vertexPressure_ ? "vertex particles" : "Shepard") << nl
+            << "    viscous force: mu " << mu_ << ", wall velocity gradient "
+            << (renormalise_ ? "renormalised" : "gamma") << endl;
+    }
+    else
+    {
+        Info<< "    viscous force: not computed (the walls have no vertex"
+            << " particles)" << endl;
+    }
 
     return true;
 }
