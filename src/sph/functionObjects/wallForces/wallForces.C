@@ -6,6 +6,7 @@
 #include "shepardInterpolation.H"
 #include "fluidProperties.H"
 #include "kernelDispatch.H"
+#include "scalarMatrices.H"
 #include "Time.H"
 #include "HashSet.H"
 #include "addToRunTimeSelectionTable.H"
@@ -150,13 +151,80 @@ Foam::tensor2D Foam::SPH::functionObjects::wallForces::vertexGradient
         );
     });
 
-    if (renormalise_)
+    if (gradScheme_ != wallGradientScheme::gamma)
     {
         // Too few neighbours to span the plane: no gradient to read
         return mag(det(M)) > SMALL ? (inv(M) & G) : tensor2D(Zero);
     }
     const scalar gammaV = usawPtr_->gammaAt(xv);
     return gammaV > SMALL ? G/gammaV : tensor2D(Zero);
+}
+
+
+Foam::tensor2D Foam::SPH::functionObjects::wallForces::vertexGradientQuadratic
+(
+    const label v
+) const
+{
+    const sphCloud& c = cloud();
+    const label nFluid = c.nFluid();
+    const scalar m = c.mass();
+    const scalar* rho = c.parts().field<scalar>("rho").cdata();
+    const vector2D* U = c.parts().field<vector2D>("U").cdata();
+    const vector2D& xv = c.walls().points()[v];
+    const vector2D& uv = U[nFluid + v];
+
+    // Normal equations of the weighted fit of u_b - u_v by the basis
+    // (dx, dy, dx^2/2, dx dy, dy^2/2) of d = (x_b - x_v)/h (scaled, so
+    // that the matrix is of order one)
+    const scalar h = 0.5*c.W().support();
+    scalarSquareMatrix A(5, Zero);
+    List<vector2D> rhs(5, Zero);
+    label nUsed = 0;
+    dispatch(c.W(), [&](const auto& K)
+    {
+        c.cells().forEachNeighbour
+        (
+            xv,
+            K.support(),
+            [&](const label b, const vector2D& rvb, const scalar r2)
+            {
+                if (b >= nFluid)
+                {
+                    return;
+                }
+                const scalar wb = m/rho[b]*K.W(std::sqrt(r2));
+                const vector2D d(-rvb/h);
+                const scalar phi[5] =
+                    {d.x(), d.y(), 0.5*sqr(d.x()), d.x()*d.y(), 0.5*sqr(d.y())};
+                for (label i = 0; i < 5; ++i)
+                {
+                    for (label j = 0; j < 5; ++j)
+                    {
+                        A(i, j) += wb*phi[i]*phi[j];
+                    }
+                    rhs[i] += wb*phi[i]*(U[b] - uv);
+                }
+                ++nUsed;
+            }
+        );
+    });
+
+    // Fewer neighbours than twice the unknowns, or a singular fit: the
+    // renormalised (linear) gradient
+    const scalarSquareMatrix& Aconst = A;
+    if (nUsed < 10 || !(mag(det(Aconst)) > 1e-12*pow(A(0, 0) + A(1, 1), 5)))
+    {
+        return vertexGradient(v);
+    }
+    LUsolve(A, rhs);
+
+    // rhs[0] = h du/dx, rhs[1] = h du/dy (each a vector of u_x, u_y)
+    return tensor2D
+    (
+        rhs[0].x(), rhs[0].y(),
+        rhs[1].x(), rhs[1].y()
+    )/h;
 }
 
 
@@ -246,7 +314,13 @@ void Foam::SPH::functionObjects::wallForces::measureViscous()
     {
         if (!vertexGrad.found(v))
         {
-            vertexGrad.insert(v, vertexGradient(v));
+            vertexGrad.insert
+            (
+                v,
+                gradScheme_ == wallGradientScheme::quadratic
+              ? vertexGradientQuadratic(v)
+              : vertexGradient(v)
+            );
         }
         return vertexGrad[v];
     };
@@ -330,14 +404,26 @@ void Foam::SPH::functionObjects::wallForces::readViscous
 )
 {
     const word scheme(dict.lookupOrDefault<word>("wallGradient", "gamma"));
-    if (scheme != "gamma" && scheme != "renormalised")
+    if (scheme == "gamma")
+    {
+        gradScheme_ = wallGradientScheme::gamma;
+    }
+    else if (scheme == "renormalised")
+    {
+        gradScheme_ = wallGradientScheme::renormalised;
+    }
+    else if (scheme == "quadratic")
+    {
+        gradScheme_ = wallGradientScheme::quadratic;
+    }
+    else
     {
         FatalIOErrorInFunction(dict)
             << "Function object " << name() << ": wallGradient " << scheme
-            << ", expected gamma or renormalised"
+            << ", expected gamma, renormalised or quadratic"
             << exit(FatalIOError);
     }
-    renormalise_ = (scheme == "renormalised");
+    gradName_ = scheme;
 
     const word pressure
     (
@@ -380,7 +466,8 @@ Foam::SPH::functionObjects::wallForces::wallForces
     minFraction_(0.1),
     hydrostatic_(false),
     vertexPressure_(false),
-    renormalise_(false),
+    gradScheme_(wallGradientScheme::gamma),
+    gradName_("gamma"),
     mu_(0),
     usawPtr_(),
     pressureForce_(vector2D::zero),
@@ -430,7 +517,7 @@ bool Foam::SPH::functionObjects::wallForces::read(const dictionary& dict)
         Info<< "    wall pressure: "
             << (vertexPressure_ ? "vertex particles" : "Shepard") << nl
             << "    viscous force: mu " << mu_ << ", wall velocity gradient "
-            << (renormalise_ ? "renormalised" : "gamma") << endl;
+            << gradName_ << endl;
     }
     else
     {
