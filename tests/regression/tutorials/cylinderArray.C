@@ -10,12 +10,19 @@ Description
     pressure and viscous parts) against C_D = 106.77 (Liu et al. 1998).
 
     Tolerances (the tutorial README has the measured figures):
-    - FV at 30 cells: -0.6 % (second order; 106.12 at t = 4 s as at 20 s);
-      checked to 1.5 %.
-    - ISPH-USAW at 30 particles: TOLERANCE_ISPH (see below), the
-      discretisation error at h = 2 dr = Rc/3.75 of the paper's figure 10
-      (about 4 % at this resolution there); both parts present (a drag
-      without its viscous part, about 40 % of it, fails).
+    - FV at 30 cells: -0.61 % (106.12; the O-grid converges at second
+      order, 106.60 at 60 cells); checked to 1.5 %.
+    - ISPH-USAW at 30 particles, C_D with the paper's wall gradient
+      (eq. (70)): measured -7.9 %, the O(h) error of a one-sided gradient
+      at h = 2 dr = Rc/3.75 (the wall shear is read too low, the pressure
+      part is within 1 % of FV's); checked to lie between -12 % and -3 %:
+      a drag without its viscous part (-38 %) or with the Shepard
+      pressure (-15 %) fails, and so would a correction that made the
+      scheme something else.
+    - ISPH-USAW with the quadratic wall gradient: measured +3.1 %; checked
+      to 6 %. The force balance, (cylinder + channel walls)/(G rho A) - 1
+      with it: +3.1 %; checked to 6 %.
+    - pressure + viscous = total to the printed digits.
 
 \*---------------------------------------------------------------------------*/
 
@@ -64,23 +71,24 @@ TEST(cylinderArrayTutorial, dragOfFvAndIsphUsawNearLiu)
     std::string out;
     ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun -test", out), 0) << out;
 
-    // L method N C_D C_D,p C_D,v err drift CPU clock steps t_end
+    // L method N C_D C_D,p C_D,v err C_D,q err,q balance drift CPU clock
+    // steps t_end
     const fileName table = dir/"runs"/"test"/"results"/"drag.dat";
     const std::vector<std::string> fv = rowOf(table, "6", "FV");
     const std::vector<std::string> sph = rowOf(table, "6", "ISPH-impl");
-    ASSERT_EQ(fv.size(), 12u) << out;
-    ASSERT_EQ(sph.size(), 12u) << out;
+    ASSERT_EQ(fv.size(), 15u) << out;
+    ASSERT_EQ(sph.size(), 15u) << out;
 
     EXPECT_NEAR(std::stod(fv[3]), CDref, 0.015*CDref);
 
     const scalar CD = std::stod(sph[3]);
     const scalar CDp = std::stod(sph[4]);
     const scalar CDv = std::stod(sph[5]);
-    EXPECT_NEAR(CD, CDref, TOLERANCE_ISPH*CDref);
-    EXPECT_NEAR(CDp + CDv, CD, 1e-3*CD);
-    // Both parts: the viscous one is about 40 % of the drag (FV: 41 of 106)
-    EXPECT_GT(CDv, 0.25*CD);
-    EXPECT_GT(CDp, 0.4*CD);
+    EXPECT_GT(CD, 0.88*CDref);
+    EXPECT_LT(CD, 0.97*CDref);
+    EXPECT_NEAR(CDp + CDv, CD, 2e-3);
+    EXPECT_NEAR(std::stod(sph[7]), CDref, 0.06*CDref);
+    EXPECT_NEAR(std::stod(sph[9]), 0, 0.06);
 
     std::string log;
     sphTest::run("cat " + dir + "/runs/test/L6/sphImplicit30/log.isphFoam", log);
