@@ -29,6 +29,8 @@ Description
       that halving dr halves the error (first order: ratio in [1.6, 2.4]).
       The quadratic fit (wallGradient quadratic) is exact for it: 1e-8.
     - No force along y (u_y = 0 and du_x/dx = 0): F_y = 0 to round-off.
+    - The pressure on USAW walls is the mean of the segment's vertex
+      particles' (eq. (69)'s p_s), or with wallPressure shepard the fluid's.
     - Walls of dummy particles (the tank of functionObjectTestTools): the
       viscous part is not computed, and says so.
 
@@ -184,15 +186,21 @@ struct usawChannel
         vector2D total;
     };
 
-    //- Run wallForces on a patch with a wallGradient scheme
-    measured forces(const word& patch, const word& scheme)
+    //- Run wallForces on a patch with a wallGradient scheme (and more
+    //- entries)
+    measured forces
+    (
+        const word& patch,
+        const word& scheme,
+        const std::string& more = ""
+    )
     {
         autoPtr<functionObject> fo = functionObject::New
         (
             patch + scheme,
             *runTime,
             sphTest::dict("type wallForces; patches (" + patch
-                + "); wallGradient " + scheme + ";")
+                + "); wallGradient " + scheme + "; " + more)
         );
         fo->execute();
         const auto& f = refCast<const SPH::functionObjects::wallForces>(fo());
@@ -267,6 +275,25 @@ TEST(wallForcesViscous, poiseuilleWallShearFirstOrderOrExactWhenQuadratic)
     const scalar ratio = err[0]/err[1];
     EXPECT_GT(ratio, 1.6) << err[0] << " " << err[1];
     EXPECT_LT(ratio, 2.4) << err[0] << " " << err[1];
+}
+
+
+TEST(wallForcesViscous, usawPressureIsThatOfTheVertexParticles)
+{
+    // Fluid at p = 0, the vertex particles at p = 5: eq. (69)'s segment
+    // value is the vertices' mean, so the lower wall (normal +y) is pushed
+    // down by 5 per unit length; the Shepard reading sees the fluid's 0
+    usawChannel ch("viscousVertexPressure", 40, [](scalar) { return 0.0; }, 0);
+    scalarField& p = ch.parts->field<scalar>("p");
+    for (label k = ch.cloud->nFluid(); k < p.size(); ++k)
+    {
+        p[k] = 5;
+    }
+    const auto vertices = ch.forces("lowerMid", "gamma");
+    EXPECT_NEAR(vertices.pressure.y(), -5*ch.D, 1e-12);
+    EXPECT_NEAR(vertices.pressure.x(), 0, 1e-12);
+    const auto shepard = ch.forces("lowerMid", "gamma", "wallPressure shepard;");
+    EXPECT_EQ(shepard.pressure, vector2D::zero);
 }
 
 

@@ -259,7 +259,9 @@ bool Foam::SPH::functionObjects::wallForces::read(const dictionary& dict)
     if (usawPtr_.valid())
     {
         Info<< "    wall pressure: "
-            << (vertexPressure_ ? "vertex particles" : "Shepard") << nl
+            << (vertexPressure_ ? "vertex particles" : "Shepard")
+            << (vertexPressure_ && hydrostatic_ ? " (hydrostatic: Shepard only)" : "")
+            << nl
             << "    viscous force: mu " << mu_ << ", wall velocity gradient "
             << gradName_ << endl;
     }
