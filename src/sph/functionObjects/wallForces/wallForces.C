@@ -83,19 +83,26 @@ void Foam::SPH::functionObjects::wallForces::writeFileHeader
 void Foam::SPH::functionObjects::wallForces::writeRow
 (
     Ostream& os,
-    const vector& total
+    const vector& pressure,
+    const vector& viscous
 ) const
 {
-    // Pressure only: the total is the pressure part, viscous is not
-    // computed
     writeCurrentTime(os);
-    os  << tab << total << tab << total << tab << vector::zero << endl;
+    os  << tab << (pressure + viscous) << tab << pressure << tab << viscous
+        << endl;
 }
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
 void Foam::SPH::functionObjects::wallForces::measure()
+{
+    measurePressure();
+    measureViscous();
+}
+
+
+void Foam::SPH::functionObjects::wallForces::measurePressure()
 {
     const sphCloud& c = cloud();
     const wallMesh& walls = c.walls();
@@ -105,8 +112,8 @@ void Foam::SPH::functionObjects::wallForces::measure()
 
     shepardInterpolation interp(c);
 
-    force_ = vector2D::zero;
-    moment_ = 0;
+    pressureForce_ = vector2D::zero;
+    pressureMoment_ = 0;
     nSegments_ = 0;
     nDry_ = 0;
 
@@ -131,8 +138,12 @@ void Foam::SPH::functionObjects::wallForces::measure()
             continue;
         }
 
+        // USAW: the segment value of eq. (69), the mean of its vertex
+        // particles' pressures (which the solvers compute at the wall)
         const scalar pMid =
-            hydrostatic_
+            vertexPressure_
+          ? 0.5*(p[c.nFluid() + ends.first()] + p[c.nFluid() + ends.second()])
+          : hydrostatic_
           ? interp.hydrostaticPressure(minFraction_)
           : interp.interpolate(p, minFraction_);
 
@@ -140,16 +151,17 @@ void Foam::SPH::functionObjects::wallForces::measure()
         const vector2D dF = -pMid*walls.segmentLength(s)*walls.segmentNormals()[s];
         const vector2D arm = mid - CofR_;
 
-        force_ += dF;
-        moment_ += arm.x()*dF.y() - arm.y()*dF.x();
+        pressureForce_ += dF;
+        pressureMoment_ += arm.x()*dF.y() - arm.y()*dF.x();
     }
 }
 
 
 void Foam::SPH::functionObjects::wallForces::writeLog() const
 {
-    Info<< "    wallForces " << name() << ": force " << force_
-        << ", moment " << moment_ << " about " << CofR_
+    Info<< "    wallForces " << name() << ": force " << force()
+        << " (pressure " << pressureForce_ << ", viscous " << viscousForce_
+        << "), moment " << moment() << " about " << CofR_
         << " (" << nDry_ << " of " << nSegments_ << " segments dry)" << endl;
 }
 
@@ -167,8 +179,18 @@ void Foam::SPH::functionObjects::wallForces::writeFiles()
         writeFileHeader(momentFilePtr_(), "Moment");
     }
 
-    writeRow(file(), vector(force_.x(), force_.y(), 0));
-    writeRow(momentFilePtr_(), vector(0, 0, moment_));
+    writeRow
+    (
+        file(),
+        vector(pressureForce_.x(), pressureForce_.y(), 0),
+        vector(viscousForce_.x(), viscousForce_.y(), 0)
+    );
+    writeRow
+    (
+        momentFilePtr_(),
+        vector(0, 0, pressureMoment_),
+        vector(0, 0, viscousMoment_)
+    );
 }
 
 
@@ -187,8 +209,15 @@ Foam::SPH::functionObjects::wallForces::wallForces
     CofR_(vector2D::zero),
     minFraction_(0.1),
     hydrostatic_(false),
-    force_(vector2D::zero),
-    moment_(0),
+    vertexPressure_(false),
+    gradScheme_(wallGradientScheme::gamma),
+    gradName_("gamma"),
+    mu_(0),
+    usawPtr_(),
+    pressureForce_(vector2D::zero),
+    viscousForce_(vector2D::zero),
+    pressureMoment_(0),
+    viscousMoment_(0),
     nSegments_(0),
     nDry_(0),
     momentFilePtr_()
@@ -217,6 +246,7 @@ bool Foam::SPH::functionObjects::wallForces::read(const dictionary& dict)
             << exit(FatalIOError);
     }
     hydrostatic_ = dict.lookupOrDefault<bool>("hydrostatic", false);
+    readViscous(dict);
 
     wordList selectedNames(patches_.size());
     forAll(patches_, i)
@@ -226,6 +256,20 @@ bool Foam::SPH::functionObjects::wallForces::read(const dictionary& dict)
     Info<< type() << ' ' << name() << ": patches " << inParentheses(selectedNames)
         << ", CofR " << CofR_ << ", minFluidFraction " << minFraction_
         << (hydrostatic_ ? ", hydrostatic pressure" : "") << endl;
+    if (usawPtr_.valid())
+    {
+        Info<< "    wall pressure: "
+            << (vertexPressure_ ? "vertex particles" : "Shepard")
+            << (vertexPressure_ && hydrostatic_ ? " (hydrostatic: Shepard only)" : "")
+            << nl
+            << "    viscous force: mu " << mu_ << ", wall velocity gradient "
+            << gradName_ << endl;
+    }
+    else
+    {
+        Info<< "    viscous force: not computed (the walls have no vertex"
+            << " particles)" << endl;
+    }
 
     return true;
 }
