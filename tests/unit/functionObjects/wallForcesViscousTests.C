@@ -132,14 +132,7 @@ struct usawChannel
         const label nFluid = x.size();
         const List<vector2D>& points = walls->points();
 
-        parts.reset(new SPH::particles(*runTime, runTime->timeName()));
-        parts->add<scalar>("rho", rho0, false);
-        parts->add<scalar>("p", 0, false);
-        parts->add<vector2D>("U", Zero, false);
-        parts->add<label>("type", 0, false);
-        parts->add<label>("id", 0, false);
-        parts->add<label>("patch", -1, false);
-        parts->resize(nFluid + points.size());
+        parts = sphTest::newParticles(*runTime, rho0, nFluid + points.size());
 
         vector2DField& pos = parts->positions();
         vector2DField& U = parts->field<vector2D>("U");
