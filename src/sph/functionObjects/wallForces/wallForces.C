@@ -4,6 +4,7 @@
 
 #include "wallForces.H"
 #include "shepardInterpolation.H"
+#include "particles.H"
 #include "Time.H"
 #include "HashSet.H"
 #include "addToRunTimeSelectionTable.H"
@@ -95,6 +96,47 @@ void Foam::SPH::functionObjects::wallForces::writeRow
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
+Foam::vector2D Foam::SPH::functionObjects::wallForces::vertexNow
+(
+    const label v
+) const
+{
+    // USAW walls carry their vertices as particles nFluid + v (laid out in
+    // the wall mesh's order, moved by the solvers' moveWalls stage); the
+    // walls of the dummy-particle method do not move
+    const sphCloud& c = cloud();
+    const label i = c.nFluid() + v;
+    const labelField& type = c.parts().field<label>("type");
+    if (i < type.size() && type[i] == label(particleKind::wallVertex))
+    {
+        return c.parts().positions()[i];
+    }
+    return c.walls().points()[v];
+}
+
+
+Foam::vector2D Foam::SPH::functionObjects::wallForces::normalNow
+(
+    const label s,
+    const vector2D& a,
+    const vector2D& b
+) const
+{
+    // The normal at t = 0 is +-(the tangent turned by 90 degrees); the same
+    // sign on the segment now gives its normal now, times its length
+    const wallMesh& walls = cloud().walls();
+    const labelPair& ends = walls.segments()[s];
+    const vector2D t0
+    (
+        walls.points()[ends.second()] - walls.points()[ends.first()]
+    );
+    const vector2D n0 = walls.segmentNormals()[s];
+    const scalar side = (-t0.y()*n0.x() + t0.x()*n0.y()) >= 0 ? 1 : -1;
+    const vector2D t = b - a;
+    return side*vector2D(-t.y(), t.x());
+}
+
+
 void Foam::SPH::functionObjects::wallForces::measure()
 {
     measurePressure();
@@ -125,11 +167,13 @@ void Foam::SPH::functionObjects::wallForces::measurePressure()
         }
         ++nSegments_;
 
+        // The segment where its ends are now: a wall moved by
+        // constant/dynamicMeshDict is not in the wall mesh, which keeps the
+        // walls of t = 0, but in the vertex particles
         const labelPair& ends = walls.segments()[s];
-        const vector2D mid
-        (
-            0.5*(walls.points()[ends.first()] + walls.points()[ends.second()])
-        );
+        const vector2D a = vertexNow(ends.first());
+        const vector2D b = vertexNow(ends.second());
+        const vector2D mid(0.5*(a + b));
 
         interp.setPoint(mid);
         if (!interp.wet(minFraction_))
@@ -147,8 +191,9 @@ void Foam::SPH::functionObjects::wallForces::measurePressure()
           ? interp.hydrostaticPressure(minFraction_)
           : interp.interpolate(p, minFraction_);
 
-        // The fluid pushes the wall against its inward normal
-        const vector2D dF = -pMid*walls.segmentLength(s)*walls.segmentNormals()[s];
+        // The fluid pushes the wall against its inward normal, turned with
+        // the segment (rigid motion keeps its length and its side)
+        const vector2D dF = -pMid*normalNow(s, a, b);
         const vector2D arm = mid - CofR_;
 
         pressureForce_ += dF;
