@@ -48,7 +48,7 @@ Foam::tensor2D Foam::SPH::functionObjects::wallForces::vertexGradient
     const scalar m = c.mass();
     const scalar* rho = c.parts().field<scalar>("rho").cdata();
     const vector2D* U = c.parts().field<vector2D>("U").cdata();
-    const vector2D xv = vertexNow(v);
+    const vector2D& xv = c.walls().points()[v];
     const vector2D& uv = U[nFluid + v];
 
     // Sums over the fluid particles b of V_b grad w_vb (x) (u_b - u_v) and
@@ -93,7 +93,7 @@ Foam::tensor2D Foam::SPH::functionObjects::wallForces::vertexGradientQuadratic
     const scalar m = c.mass();
     const scalar* rho = c.parts().field<scalar>("rho").cdata();
     const vector2D* U = c.parts().field<vector2D>("U").cdata();
-    const vector2D xv = vertexNow(v);
+    const vector2D& xv = c.walls().points()[v];
     const vector2D& uv = U[nFluid + v];
 
     // Normal equations of the weighted fit of u_b - u_v by the basis
@@ -164,12 +164,7 @@ void Foam::SPH::functionObjects::wallForces::measureViscous()
     const labelHashSet selected(patches_);
 
     // Moving walls: gamma at the vertices where they are now
-    List<vector2D> now(walls.points().size());
-    forAll(now, v)
-    {
-        now[v] = vertexNow(v);
-    }
-    usawPtr_->updateGeometry(now);
+    usawPtr_->updateGeometry(walls.points());
 
     // Each vertex's gradient once, although two segments share it
     Map<tensor2D> vertexGrad;
@@ -196,11 +191,11 @@ void Foam::SPH::functionObjects::wallForces::measureViscous()
         {
             continue;
         }
-        // Where the segment is now (a wall moved by dynamicMeshDict)
         const labelPair& ends = walls.segments()[s];
-        const vector2D a = vertexNow(ends.first());
-        const vector2D b = vertexNow(ends.second());
-        const vector2D mid(0.5*(a + b));
+        const vector2D mid
+        (
+            0.5*(walls.points()[ends.first()] + walls.points()[ends.second()])
+        );
         interp.setPoint(mid);
         if (!interp.wet(minFraction_))
         {
@@ -213,7 +208,9 @@ void Foam::SPH::functionObjects::wallForces::measureViscous()
         (
             0.5*(gradAt(ends.first()) + gradAt(ends.second()))
         );
-        const vector2D dF = mu_*((gradU + gradU.T()) & normalNow(s, a, b));
+        const vector2D& n = walls.segmentNormals()[s];
+        const vector2D dF =
+            mu_*((gradU + gradU.T()) & n)*walls.segmentLength(s);
         const vector2D arm = mid - CofR_;
 
         viscousForce_ += dF;
