@@ -90,7 +90,12 @@ void Foam::SPH::timeClock::restore(Time& runTime, const dictionary& dict)
     {
         return;
     }
-    runTime.setTime(t, dict.get<label>("timeIndex"));
+    // Keep the start directory's own name: timeName(t) at the precision
+    // Time starts with need not spell it as it was written (the names grow
+    // to 17 digits and more), and the particles are read from it (a restart
+    // from 1.2115650656307653 looked in 1.211565065630765 and started afresh)
+    const word dirName(runTime.timeName());
+    runTime.setTime(instant(t, dirName), dict.get<label>("timeIndex"));
 
     if (dict.get<scalar>("writeInterval") == runTime.*clockAccess::writeIntervalMember())
     {
@@ -165,6 +170,33 @@ void Foam::SPH::timeClock::selectStart(Time& runTime)
     FatalIOErrorInFunction(control)
         << "No complete time directory to start from in " << runTime.path()
         << exit(FatalIOError);
+}
+
+
+void Foam::SPH::timeClock::checkFreshStart(const Time& runTime)
+{
+    if (isWrittenState(runTime.timePath()))
+    {
+        return;
+    }
+    for (const instant& t : runTime.times())
+    {
+        const fileName tDir(runTime.path()/t.name());
+        if
+        (
+            t.name() != runTime.constant() && t.value() < runTime.value()
+         && isWrittenState(tDir)
+        )
+        {
+            FatalErrorInFunction
+                << "No particles to start from at time " << runTime.timeName()
+                << ": " << runTime.timePath() << " holds no written state,"
+                << " while the earlier time " << t.name() << " does" << nl
+                << "    (a start afresh from constant/sphMesh there would not"
+                << " be a restart). Start from a time directory that holds"
+                << " lagrangian/sph/positions" << exit(FatalError);
+        }
+    }
 }
 
 

@@ -330,6 +330,7 @@ void Foam::SPH::timeLoop::prepareStart(Time& runTime, const word& stateName)
         )
     );
     timeClock::restore(runTime, state);
+    timeClock::checkFreshStart(runTime);
 }
 
 
