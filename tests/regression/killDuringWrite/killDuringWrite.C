@@ -206,3 +206,25 @@ TEST(killDuringWrite, aWriteThatFailsSaysSoAndKeepsEarlierTimes)
 
 
 // ************************************************************************* //
+
+
+TEST(killDuringWrite, aLaterTimeWithoutParticlesIsNotAFreshStart)
+{
+    // A later time directory that holds no written state (an empty copy,
+    // or one Time names differently from the folder): starting afresh from
+    // constant/sphMesh there would pass for a restart; it is an error
+    const fileName dir = tank("isphFoam", "laterWithoutParticles");
+    const fileName controlDict(dir/"system"/"controlDict");
+    setEntry(controlDict, "adjustTimeStep", "no");
+    setEntry(controlDict, "endTime", "0.005");
+    std::string out;
+    ASSERT_EQ(run(bin + "isphFoam -case " + dir, out), 0) << out;
+
+    mkDir(dir/"0.5");
+    setEntry(controlDict, "startFrom", "latestTime");
+    setEntry(controlDict, "endTime", "0.6");
+    EXPECT_NE(run(bin + "isphFoam -case " + dir, out), 0) << out;
+    EXPECT_NE(out.find("No particles to start from at time 0.5"), std::string::npos) << out;
+    EXPECT_EQ(out.find("Restarting from"), std::string::npos) << out;
+    EXPECT_EQ(out.find("printStack"), std::string::npos) << out;
+}
