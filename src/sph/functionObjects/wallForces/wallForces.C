@@ -98,7 +98,8 @@ void Foam::SPH::functionObjects::wallForces::writeRow
 
 Foam::vector2D Foam::SPH::functionObjects::wallForces::vertexNow
 (
-    const label v
+    const label v,
+    const labelUList& type
 ) const
 {
     // USAW walls carry their vertices as particles nFluid + v (laid out in
@@ -106,7 +107,6 @@ Foam::vector2D Foam::SPH::functionObjects::wallForces::vertexNow
     // walls of the dummy-particle method do not move
     const sphCloud& c = cloud();
     const label i = c.nFluid() + v;
-    const labelField& type = c.parts().field<label>("type");
     if (i < type.size() && type[i] == label(particleKind::wallVertex))
     {
         return c.parts().positions()[i];
@@ -149,6 +149,7 @@ void Foam::SPH::functionObjects::wallForces::measurePressure()
     const sphCloud& c = cloud();
     const wallMesh& walls = c.walls();
     const scalarField& p = c.parts().field<scalar>("p");
+    const labelField& type = c.parts().field<label>("type");
 
     const labelHashSet selected(patches_);
 
@@ -171,8 +172,8 @@ void Foam::SPH::functionObjects::wallForces::measurePressure()
         // constant/dynamicMeshDict is not in the wall mesh, which keeps the
         // walls of t = 0, but in the vertex particles
         const labelPair& ends = walls.segments()[s];
-        const vector2D a = vertexNow(ends.first());
-        const vector2D b = vertexNow(ends.second());
+        const vector2D a = vertexNow(ends.first(), type);
+        const vector2D b = vertexNow(ends.second(), type);
         const vector2D mid(0.5*(a + b));
 
         interp.setPoint(mid);
