@@ -20,6 +20,9 @@ Foam::SPH::wallConditions::conditionTypeNames
     { conditionType::movingWallVelocity, "movingWallVelocity" },
     { conditionType::zeroGradient, "zeroGradient" },
     { conditionType::fixedFluxPressure, "fixedFluxPressure" },
+    { conditionType::kqRWallFunction, "kqRWallFunction" },
+    { conditionType::epsilonWallFunction, "epsilonWallFunction" },
+    { conditionType::nutkWallFunction, "nutkWallFunction" },
 });
 
 
@@ -81,9 +84,37 @@ Foam::SPH::wallConditions::validTypes() const
             {"fixedFluxPressure", "the same Neumann wall condition (eq. (43))"},
         };
     }
+    if (fieldName_ == "k")
+    {
+        return
+        {{
+            "kqRWallFunction",
+            "no flux through the wall, the wall particles' k from the fluid's"
+            " (Leroy et al. 2014, eqs. (25)-(26))"
+        }};
+    }
+    if (fieldName_ == "epsilon")
+    {
+        return
+        {{
+            "epsilonWallFunction",
+            "the log-layer wall flux and wall value (Leroy et al. 2014,"
+            " eqs. (27)-(29))"
+        }};
+    }
+    if (fieldName_ == "nut")
+    {
+        return
+        {{
+            "nutkWallFunction",
+            "the log-law wall friction on the velocity (Leroy et al. 2014,"
+            " eqs. (22)-(23))"
+        }};
+    }
     FatalErrorInFunction
         << "No wall conditions for the field " << fieldName_
-        << ": sphFoam reads those of U and p" << exit(FatalError);
+        << ": sphFoam reads those of U, p, k, epsilon and nut"
+        << exit(FatalError);
     return {};
 }
 
@@ -473,6 +504,15 @@ Foam::string Foam::SPH::wallConditions::describe(const label patchi) const
         case conditionType::zeroGradient:
         case conditionType::fixedFluxPressure:
             os  << "Neumann wall condition (eq. (43))";
+            break;
+        case conditionType::kqRWallFunction:
+            os  << "no flux, wall value from the fluid (eqs. (25)-(26))";
+            break;
+        case conditionType::epsilonWallFunction:
+            os  << "log-layer flux and wall value (eqs. (27)-(29))";
+            break;
+        case conditionType::nutkWallFunction:
+            os  << "log-law wall friction (eqs. (22)-(23))";
             break;
     }
     return os.str();

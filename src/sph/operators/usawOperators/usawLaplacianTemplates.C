@@ -183,6 +183,54 @@ void Foam::SPH::usaw::laminarViscous
 
 
 template<class Kernel>
+void Foam::SPH::usaw::wallFunctionViscous
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const scalarUList& nuEff,
+    const UList<vector2D>& u,
+    const scalar dr,
+    const scalar nu,
+    const logLaw& law,
+    UList<vector2D>& result
+)
+{
+    checkOperands("wallFunctionViscous", nbrs, walls, V.size(), {nuEff.size(), u.size()}, -1, result.size());
+    const scalar* v = V.cdata();
+    const scalar* nuE = nuEff.cdata();
+    const vector2D* U = u.cdata();
+    const vector2D* normal = walls.segmentNormals().cdata();
+
+    // Eq. (22): the wall at rest, u^R_as = u_a (the vertex particles'
+    // velocities are the fluid's slip there, eq. (24), not the wall's)
+    detail::sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D&, const scalar r)
+        {
+            return (v[j]*(nuE[i] + nuE[j])*K.dWdrByR(r))*(U[i] - U[j]);
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar d)
+        {
+            const vector2D& n = normal[s];
+            const vector2D uRt(U[i] - (U[i] & n)*n);
+            const scalar ut = mag(uRt);
+            if (ut == 0)
+            {
+                return vector2D(Zero);
+            }
+            const scalar uStar2 = law.uStarSqr(ut, max(d, dr), nu);
+            return vector2D((-2*uStar2*mag(gradGammaAs)/ut)*uRt);
+        },
+        result
+    );
+}
+
+
+template<class Kernel>
 void Foam::SPH::usaw::concentrationGradient
 (
     const Kernel& K,

@@ -10,7 +10,11 @@
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
-void Foam::SPH::checkUnreadFiles(const Time& runTime)
+void Foam::SPH::checkUnreadFiles
+(
+    const Time& runTime,
+    const bool turbulenceModels
+)
 {
     const fileName movingWalls(runTime.path()/runTime.constant()/"movingWalls");
     if (isFile(movingWalls))
@@ -37,12 +41,12 @@ void Foam::SPH::checkUnreadFiles(const Time& runTime)
     (
         turbulence.getOrDefault<word>("simulationType", "laminar")
     );
-    if (model != "laminar")
+    if (model != "laminar" && !turbulenceModels)
     {
         FatalIOErrorInFunction(turbulence.lookup("simulationType"))
-            << "simulationType " << model << ": the SPH solvers model laminar"
-            << " flow only (simulationType laminar, or no file)"
-            << exit(FatalIOError);
+            << "simulationType " << model << ": this solver models laminar"
+            << " flow only (simulationType laminar, or no file); isphFoam"
+            << " has the RAS model kEpsilon" << exit(FatalIOError);
     }
 }
 

@@ -21,6 +21,7 @@
 #include "usawWallModel.H"
 #include "checkedEntry.H"
 #include "timeControls.H"
+#include "memberStage.H"
 
 #include <cmath>
 
@@ -169,6 +170,26 @@ void Foam::SPH::isph::addStages()
     stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (30)"));
     if (moving) stages_.add(new moveWalls(w, runTime_, false));
     stages_.add(new usawNeighbours(w, ""));
+    if (!turbulence_->isLaminar())
+    {
+        if (implicitViscosity_)
+        {
+            FatalIOErrorInFunction(schemes_.lookup("viscousScheme"))
+                << "viscousScheme implicit with the RAS model "
+                << turbulence_->type() << ": the implicit step has a uniform"
+                << " viscosity; use viscousScheme explicit (the paper's)"
+                << exit(FatalIOError);
+        }
+        stages_.add
+        (
+            new memberStage<turbulenceModel>
+            (
+                "turbulence", turbulence_->reads(), turbulence_->writes(),
+                turbulence_->description(), *turbulence_,
+                &turbulenceModel::correct
+            )
+        );
+    }
     addPrediction(renormalised);
     if (freeSurface_) stages_.add(new freeSurface(w, divRMax));
     pressure_ = &stages_.add
@@ -233,6 +254,7 @@ Foam::SPH::isph::isph(Time& runTime)
     forces_(runTime),
     freeSurface_(false),
     implicitViscosity_(false),
+    fresh_(true),
     pressure_(nullptr),
     wallDistance_(nullptr),
     maxSpeed_(0),
@@ -278,13 +300,18 @@ void Foam::SPH::isph::printSettings() const
     }
     Info<< (freeSurface_ ? " with |du/dt| >= |g|" : "")
         << (adjust ? "" : " (adjustTimeStep off: deltaT fixed)") << nl;
+    if (turbulence_->isLaminar())
+    {
+        Info<< "    turbulence          "
+            << turbulence_->description().c_str() << nl;
+    }
 }
 
 
 Foam::scalar Foam::SPH::isph::maxDeltaT() const
 {
     const scalar h = kernel_->h();
-    const scalar nu = work_->nu;
+    const scalar nu = work_->nu + turbulence_->maxNut();
     const vector2D g = work_->g + work_->gPeriodic;
 
     // u_ref: the fastest particle, fluid or wall (000_... after eq. (50))

@@ -58,10 +58,14 @@ void Foam::SPH::isph::initialise(const scalar rho0)
     parts_.add<label>("type");
     parts_.add<label>("patch");
 
+    // Before the restart's fields are read: the model adds its own
+    turbulence_ = turbulenceModel::New(runTime_, parts_);
+
     const label nVertices = walls_->points().size();
     if (isFile(parts_.path()/"positions"))
     {
         Info<< "Restarting from " << parts_.path() << nl;
+        fresh_ = false;
         parts_.read();
         checkRestartParticles(parts_, walls_->patchNames().size(), sphCloud::solverDomain(*walls_, kernel_->support()));
         nFluid_ = sphCloud::countFluid(parts_);
@@ -125,6 +129,7 @@ void Foam::SPH::isph::buildCloud()
         V[nFluid_ + v] *= share[v];
     }
     moveWalls::move(*work_, runTime_.value(), true);
+    turbulence_->connect(*work_, *walls_, fresh_);
 }
 
 

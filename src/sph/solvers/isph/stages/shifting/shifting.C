@@ -34,6 +34,22 @@ void Foam::SPH::shifting::execute(const scalar dt)
     }
     maxShift_ = std::sqrt(maxShift2);
 
+    // The same correction (38) for the scalars that ride with the fluid
+    // (k and epsilon of a RAS model), with the shift just made
+    for (const word& name : w.shiftedScalars)
+    {
+        scalarField& f = w.parts.field<scalar>(name);
+        dispatch(w.W, [&](const auto& K)
+        {
+            usaw::gradMinus(K, w.nbrs, w.usaw, w.V, f, gradF_);
+        });
+        for (label i = 0; i < w.nFluid; ++i)
+        {
+            if (nearSurface[i]) continue;
+            f[i] += -coeff*gradC_[i] & gradF_[i];
+        }
+    }
+
     const domain& dom = w.cloud.dom();
     if (dom.anyPeriodic())
     {

@@ -1,0 +1,283 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "kEpsilon.H"
+#include "isphWork.H"
+#include "usawOperators.H"
+#include "kernelDispatch.H"
+#include "initialField.H"
+#include "wallConditions.H"
+#include "checkedEntry.H"
+#include "stage.H"
+#include "Time.H"
+#include "Switch.H"
+#include "addToRunTimeSelectionTable.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace SPH
+{
+    defineTypeNameAndDebug(kEpsilon, 0);
+    addToRunTimeSelectionTable(turbulenceModel, kEpsilon, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::SPH::kEpsilon::production
+(
+    const scalar k,
+    const scalar nut,
+    const tensor2D& gradU,
+    const scalar Cmu
+)
+{
+    // S = sqrt(2 S:S), S the symmetric part of grad u (21)
+    const scalar S2 =
+        2*(sqr(gradU.xx()) + sqr(gradU.yy())) + sqr(gradU.xy() + gradU.yx());
+    return min(std::sqrt(Cmu)*k*std::sqrt(S2), nut*S2);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::kEpsilon::readInitial(const word& name)
+{
+    const initialField f(runTime_, name);
+    if (!f.found())
+    {
+        FatalErrorInFunction
+            << "RASModel kEpsilon needs the initial " << name << ": no "
+            << runTime_.timeName()/name << " with an internalField (the FV"
+            << " case's 0/" << name << " serves)" << exit(FatalError);
+    }
+    SubList<scalar> values(parts_.field<scalar>(name), work_->nFluid);
+    f.read(values);
+    forAll(values, i)
+    {
+        if (!(values[i] > 0))
+        {
+            FatalIOErrorInFunction(f.stream())
+                << "internalField of " << f.path() << ": " << name
+                << " must be positive, found " << values[i]
+                << (values.size() > 1 ? " for fluid particle " : "")
+                << (values.size() > 1 ? Foam::name(i) : word())
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::SPH::kEpsilon::updateNut()
+{
+    const scalarField& k = parts_.field<scalar>("k");
+    const scalarField& eps = parts_.field<scalar>("epsilon");
+    scalarField& nut = parts_.field<scalar>("nut");
+    forAll(nut, i)
+    {
+        nut[i] = eps[i] > 0 ? Cmu_*k[i]*k[i]/eps[i] : 0;
+    }
+}
+
+
+template<class Kernel>
+void Foam::SPH::kEpsilon::sources(const Kernel& K)
+{
+    isphWork& w = *work_;
+    const scalarField& k = parts_.field<scalar>("k");
+    const scalarField& eps = parts_.field<scalar>("epsilon");
+    const scalarField& nut = parts_.field<scalar>("nut");
+    const vector2DField& U = parts_.field<vector2D>("U");
+
+    // Eqs. (20)-(21)
+    usaw::gradMinus(K, w.nbrs, w.usaw, w.V, U, gradU_);
+    for (label i = 0; i < w.nFluid; ++i)
+    {
+        P_[i] = production(k[i], nut[i], gradU_[i], Cmu_);
+    }
+
+    // Eqs. (25) and (27), with B = nu + nu_T/sigma
+    forAll(Dk_, i)
+    {
+        Dk_[i] = w.nu + nut[i]/sigmak_;
+        Deps_[i] = w.nu + nut[i]/sigmaEps_;
+    }
+    usaw::laplacian(K, w.nbrs, w.usaw, w.V, Dk_, k, noFlux_, Lk_);
+    epsilonDiffusion
+    (
+        K, w.nbrs, w.usaw, w.V, w.nFluid, Deps_, k, eps, noFlux_, Cmu_,
+        sigmaEps_, w.cloud.dr(), Leps_
+    );
+}
+
+
+void Foam::SPH::kEpsilon::advance(const scalar dt)
+{
+    scalarField& k = parts_.field<scalar>("k");
+    scalarField& eps = parts_.field<scalar>("epsilon");
+    for (label i = 0; i < work_->nFluid; ++i)
+    {
+        // (18): (k' - k)/dt = P - eps k'/k + L_k; (19) alike for epsilon
+        const scalar rate = eps[i]/k[i];
+        const scalar kNum = k[i] + dt*(P_[i] + Lk_[i]);
+        const scalar epsNum = eps[i] + dt*(rate*C1_*P_[i] + Leps_[i]);
+        if (!(kNum > 0)) nonPositive("k", i, kNum/(1 + dt*rate));
+        if (!(epsNum > 0)) nonPositive("epsilon", i, epsNum/(1 + dt*C2_*rate));
+        k[i] = kNum/(1 + dt*rate);
+        eps[i] = epsNum/(1 + dt*C2_*rate);
+    }
+}
+
+
+void Foam::SPH::kEpsilon::nonPositive
+(
+    const word& name,
+    const label i,
+    const scalar value
+) const
+{
+    throw stageFailure
+    (
+        "kEpsilon: " + name + " of fluid particle " + Foam::name(i) + " at "
+      + Foam::name(parts_.positions()[i].x()) + " "
+      + Foam::name(parts_.positions()[i].y()) + " would be " + Foam::name(value)
+      + " after the step from t = " + Foam::name(runTime_.value())
+      + " (k and epsilon must stay positive: a smaller time step, maxCo,"
+        " or initial k and epsilon closer to the flow)",
+        i
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::kEpsilon::kEpsilon
+(
+    const Time& runTime,
+    particles& parts,
+    const dictionary& ras
+)
+:
+    turbulenceModel(runTime, parts),
+    Cmu_(0.09),
+    C1_(1.44),
+    C2_(1.92),
+    sigmak_(1.0),
+    sigmaEps_(1.3),
+    wallLaw_(0.41, 5.2)
+{
+    const dictionary& coeffs = ras.subOrEmptyDict("kEpsilonCoeffs");
+    Cmu_ = checkedScalar(coeffs, "Cmu", Cmu_, {0, VGREAT, true});
+    C1_ = checkedScalar(coeffs, "C1", C1_, {0, VGREAT, true});
+    C2_ = checkedScalar(coeffs, "C2", C2_, {0, VGREAT, true});
+    sigmak_ = checkedScalar(coeffs, "sigmak", sigmak_, {0, VGREAT, true});
+    sigmaEps_ = checkedScalar(coeffs, "sigmaEps", sigmaEps_, {0, VGREAT, true});
+    if (ras.getOrDefault<Switch>("printCoeffs", false))
+    {
+        Info<< "kEpsilonCoeffs { Cmu " << Cmu_ << "; C1 " << C1_ << "; C2 "
+            << C2_ << "; sigmak " << sigmak_ << "; sigmaEps " << sigmaEps_
+            << "; } log law kappa " << wallLaw_.kappa() << ", B "
+            << wallLaw_.B() << nl;
+    }
+    parts_.add<scalar>("k");
+    parts_.add<scalar>("epsilon");
+    parts_.add<scalar>("nut");
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::kEpsilon::connect
+(
+    isphWork& work,
+    const wallMesh& walls,
+    bool fresh
+)
+{
+    work_ = &work;
+    if (work.motion.any())
+    {
+        FatalErrorInFunction
+            << "RASModel kEpsilon with moving walls: the wall functions of"
+            << " isphFoam are for walls at rest" << exit(FatalError);
+    }
+    for (const word name : {"k", "epsilon", "nut"})
+    {
+        wallConditions(runTime_, walls, name);
+    }
+
+    const label nF = work.nFluid;
+    const label n = parts_.size();
+    vertexSegments_.setSize(n - nF);
+    const List<labelPair>& ends = work.usaw.segmentParticles();
+    forAll(ends, s)
+    {
+        vertexSegments_[ends[s].first() - nF].append(s);
+        vertexSegments_[ends[s].second() - nF].append(s);
+    }
+    P_.setSize(n, Zero);
+    Lk_.setSize(n, Zero);
+    Leps_.setSize(n, Zero);
+    gradU_.setSize(n, Zero);
+    Dk_.setSize(n, Zero);
+    Deps_.setSize(n, Zero);
+    noFlux_.setSize(ends.size(), Zero);
+
+    if (fresh)
+    {
+        readInitial("k");
+        readInitial("epsilon");
+    }
+    updateNut();
+    work.nut = &parts_.field<scalar>("nut");
+    work.wallLaw = &wallLaw_;
+    work.shiftedScalars.append("k");
+    work.shiftedScalars.append("epsilon");
+}
+
+
+Foam::scalar Foam::SPH::kEpsilon::maxNut() const
+{
+    const scalarField& nut = parts_.field<scalar>("nut");
+    scalar m = 0;
+    for (label i = 0; i < work_->nFluid; ++i)
+    {
+        m = max(m, nut[i]);
+    }
+    return m;
+}
+
+
+void Foam::SPH::kEpsilon::correct(const scalar dt)
+{
+    dispatch(work_->W, [&](const auto& K)
+    {
+        vertexValues
+        (
+            K, work_->nbrs, work_->usaw, work_->V, work_->nFluid,
+            vertexSegments_, Cmu_, wallLaw_.kappa(), work_->cloud.dr(),
+            parts_.field<scalar>("k"), parts_.field<scalar>("epsilon")
+        );
+        updateNut();
+        sources(K);
+    });
+    advance(dt);
+}
+
+
+Foam::string Foam::SPH::kEpsilon::description() const
+{
+    return
+        "k-epsilon, eqs. (18)-(21), (25)-(29); nu_T (14) in the viscous term"
+        " (22) with the log law (23), kappa " + Foam::name(wallLaw_.kappa())
+      + ", B " + Foam::name(wallLaw_.B());
+}
+
+
+// ************************************************************************* //
