@@ -73,10 +73,10 @@ TEST(turbulentChannelTutorial, fvKEpsilonGivesUStarOneAndTheLogLaw)
     std::string out;
     ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun -test -fv", out), 0) << out;
 
-    // Re method dr n y+_1 u*_wall log_max log_mean CPU_s clock_s t files
+    // Re method dr n y+_1 u*_wall log_max log_mean CPU_s clock_s t files drift
     const fileName runs = dir/"runs"/"test"/"results"/"runs.dat";
     const std::vector<std::string> fv = rowOf(runs, {"640", "FV", "0.1"});
-    ASSERT_EQ(fv.size(), 12u) << out;
+    ASSERT_EQ(fv.size(), 13u) << out;
 
     EXPECT_EQ(fv[3], "5");                              // cells, lower half
     EXPECT_NEAR(std::stod(fv[4]), 64.0, 1e-6);          // y+ of the first

@@ -76,7 +76,7 @@ def fold(y, e):
     return np.minimum(y, 2*e - y)
 
 
-def fv_profiles(case, e):
+def fv_profiles(case):
     """{y, u, k, eps, nut} at the cell centres over the whole channel, from
     the last sampled time (raw sets: y then the fields, in the order of
     the file name cellCentres_<f1>_<f2>...xy)."""
@@ -157,7 +157,10 @@ def read_vtp(path):
 
 def sph_profiles(case, e, dr, average):
     """Row means of the fluid particles over the files of the last
-    'average' seconds of the series, folded onto the lower half."""
+    'average' seconds of the series, folded onto the lower half, and the
+    largest distance of a particle from its row's nominal y (the rows
+    are dr apart from the lowest, taken at the nearest multiple of dr/2)
+    over those files, in dr."""
     series = sph_series(case)
     files = json.load(open(series)).get("files", [])
     if not files:
@@ -170,11 +173,13 @@ def sph_profiles(case, e, dr, average):
         y = fold(p["y"], e)
         if count is None:
             # The rows k dr from the lowest one, up to the centre
-            y0 = y.min()
+            y0 = 0.5*dr*np.rint(2*y.min()/dr)
+            drift = 0.0
             nRows = int(round((e - y0)/dr)) + 1
             count = np.zeros(nRows)
         row = np.clip(np.rint((y - y0)/dr).astype(int), 0, nRows - 1)
         count += np.bincount(row, minlength=nRows)
+        drift = max(drift, np.abs(y - y0 - row*dr).max()/dr)
         for key in ("y",) + QUANTITIES:
             if key not in p:
                 missing.add(key)
@@ -186,7 +191,7 @@ def sph_profiles(case, e, dr, average):
     if missing:
         print("compare: %s: no point data %s: skipped"
               % (case, ", ".join(sorted(missing))), file=sys.stderr)
-    return out, len(chosen), tLast
+    return out, len(chosen), drift
 
 
 def read_dns():
