@@ -120,12 +120,15 @@ def fv_wall_shear(case):
 
 
 def sph_series(case):
+    """VTK/<case>.vtp.series, else the only particle series there (not the
+    walls', not sphMesh's)."""
     vtk = os.path.join(case, "VTK")
     own = os.path.join(vtk, os.path.basename(os.path.normpath(case)) + ".vtp.series")
     if os.path.isfile(own):
         return own
     found = sorted(f for f in os.listdir(vtk)
-                   if f.endswith(".vtp.series") and not f.endswith("_walls.vtp.series")) \
+                   if f.endswith(".vtp.series") and not f.endswith("_walls.vtp.series")
+                   and f != "sphMesh.vtp.series") \
         if os.path.isdir(vtk) else []
     if len(found) != 1:
         raise RuntimeError("no VTK/<case>.vtp.series (found: %s)" % (found or "none"))
