@@ -7,7 +7,9 @@ Description
     wall functions, cyclic in x, the body force f = 1 m/s^2 of a
     vectorSemiImplicitSource) at Re* = 640 on 10 cells across the 2 m
     (dr = 0.1: the first cell centre at y = 0.1, y+ = 64), and compare
-    writes runs/test/results/runs.dat and differences.dat.
+    writes runs/test/results/runs.dat and differences.dat. Beside it
+    pimpleFoam runs from the same start to t = 2 s (FV-t: the reference of
+    the SPH run of the same length); here only its end time is checked.
 
     Tolerances (the tutorial README has the measured figures):
     - u* from the wall shear stress (wallShearStress function object):
@@ -83,6 +85,11 @@ TEST(turbulentChannelTutorial, fvKEpsilonGivesUStarOneAndTheLogLaw)
     EXPECT_NEAR(std::stod(fv[5]), 1.0, 0.02);           // u* (wall shear)
     EXPECT_LT(std::stod(fv[6]), 0.08);                  // u+ vs the log law
     EXPECT_GT(std::stod(fv[7]), 0.0);
+
+    // The history to the SPH run's end time
+    const std::vector<std::string> fvt = rowOf(runs, {"640", "FV-t", "0.1"});
+    ASSERT_EQ(fvt.size(), 13u) << out;
+    EXPECT_EQ(fvt[10], "2");
 
     // Re method dr q vs max mean n
     const fileName diffs = dir/"runs"/"test"/"results"/"differences.dat";
