@@ -94,6 +94,19 @@ TEST(turbulentChannelTutorial, isphKEpsilonFollowsTheFvSpinUp)
     sphTest::run("cat " + dir + "/runs/test/Re640/sph_dr0.1/log.isphFoam", log);
     EXPECT_NE(log.find("turbulence          k-epsilon"), std::string::npos)
         << log.substr(0, 4000);
+
+    // yPlus at t = 2 s: both walls alike (the flow is symmetric), and the
+    // first row's y+ of the spin-up (10.7 measured; 64 at steady state)
+    const fileName yPlusFile =
+        dir/"runs"/"test"/"Re640"/"sph_dr0.1"/"postProcessing"/"yPlus"/"0"
+       /"yPlus.dat";
+    const std::vector<std::string> lower = rowOf(yPlusFile, {"2", "lowerWall"});
+    const std::vector<std::string> upper = rowOf(yPlusFile, {"2", "upperWall"});
+    ASSERT_EQ(lower.size(), 5u);
+    ASSERT_EQ(upper.size(), 5u);
+    EXPECT_NEAR(std::stod(lower[4]), std::stod(upper[4]), 1e-6*std::stod(upper[4]));
+    EXPECT_GT(std::stod(lower[4]), 8);
+    EXPECT_LT(std::stod(lower[4]), 14);
 }
 
 
