@@ -219,6 +219,13 @@ TEST(isphFoam, hydrostaticTankStaysAtRest)
     EXPECT_NE(out.find("free surface        D{r} <= 1.5"), std::string::npos) << out;
     EXPECT_EQ(out.find("moving walls"), std::string::npos) << out;
 
+    // Laminar (no constant/turbulenceProperties): said at start, no
+    // turbulence stage, no k, epsilon or nut written
+    EXPECT_NE(out.find("turbulence          laminar: no k, epsilon or nut"), std::string::npos) << out;
+    EXPECT_EQ(out.find("k-epsilon"), std::string::npos) << out;
+    EXPECT_FALSE(isFile(dir/"2"/SPH::particles::defaultLocal/"k"));
+    EXPECT_TRUE(isFile(dir/"2"/SPH::particles::defaultLocal/"U"));
+
     // The tutorial's own check, as Allrun runs it
     ASSERT_EQ(sphTest::runWithBashrc(std::string(dir) + "/check -case " + dir, out), 0) << out;
     const auto r = sphTest::readKeyValues(dir/"hydrostatic.dat");
