@@ -30,42 +30,7 @@ Description
 #include <gtest/gtest.h>
 #include "testCase.H"
 
-#include <fstream>
-#include <sstream>
-
 using namespace Foam;
-
-namespace
-{
-    //- The words of the first row of a results table whose leading words
-    //- are the given ones
-    std::vector<std::string> rowOf
-    (
-        const fileName& file,
-        const std::vector<std::string>& key
-    )
-    {
-        std::ifstream is(file);
-        std::string line;
-        while (std::getline(is, line))
-        {
-            std::istringstream ls(line);
-            std::vector<std::string> words;
-            std::string w;
-            while (ls >> w) words.push_back(w);
-            if
-            (
-                words.size() >= key.size()
-             && std::equal(key.begin(), key.end(), words.begin())
-            )
-            {
-                return words;
-            }
-        }
-        return {};
-    }
-}
-
 
 TEST(turbulentChannelTutorial, fvKEpsilonGivesUStarOneAndTheLogLaw)
 {
@@ -77,7 +42,7 @@ TEST(turbulentChannelTutorial, fvKEpsilonGivesUStarOneAndTheLogLaw)
 
     // Re method dr n y+_1 u*_wall log_max log_mean CPU_s clock_s t files drift
     const fileName runs = dir/"runs"/"test"/"results"/"runs.dat";
-    const std::vector<std::string> fv = rowOf(runs, {"640", "FV", "0.1"});
+    const std::vector<std::string> fv = sphTest::tableRow(runs, {"640", "FV", "0.1"});
     ASSERT_EQ(fv.size(), 13u) << out;
 
     EXPECT_EQ(fv[3], "5");                              // cells, lower half
@@ -87,14 +52,14 @@ TEST(turbulentChannelTutorial, fvKEpsilonGivesUStarOneAndTheLogLaw)
     EXPECT_GT(std::stod(fv[7]), 0.0);
 
     // The history to the SPH run's end time
-    const std::vector<std::string> fvt = rowOf(runs, {"640", "FV-t", "0.1"});
+    const std::vector<std::string> fvt = sphTest::tableRow(runs, {"640", "FV-t", "0.1"});
     ASSERT_EQ(fvt.size(), 13u) << out;
     EXPECT_EQ(fvt[10], "2");
 
     // Re method dr q vs max mean n
     const fileName diffs = dir/"runs"/"test"/"results"/"differences.dat";
     const std::vector<std::string> dns =
-        rowOf(diffs, {"640", "FV", "0.1", "u+", "DNS"});
+        sphTest::tableRow(diffs, {"640", "FV", "0.1", "u+", "DNS"});
     ASSERT_EQ(dns.size(), 8u) << out;
     EXPECT_LT(std::stod(dns[5]), 0.05);
     EXPECT_GT(std::stoi(dns[7]), 2);

@@ -22,39 +22,10 @@ Description
 #include <gtest/gtest.h>
 #include "testCase.H"
 
-#include <fstream>
-#include <sstream>
-
 using namespace Foam;
 
 namespace
 {
-    std::vector<std::string> rowOf
-    (
-        const fileName& file,
-        const std::vector<std::string>& key
-    )
-    {
-        std::ifstream is(file);
-        std::string line;
-        while (std::getline(is, line))
-        {
-            std::istringstream ls(line);
-            std::vector<std::string> words;
-            std::string w;
-            while (ls >> w) words.push_back(w);
-            if
-            (
-                words.size() >= key.size()
-             && std::equal(key.begin(), key.end(), words.begin())
-            )
-            {
-                return words;
-            }
-        }
-        return {};
-    }
-
     double maxDifference
     (
         const fileName& diffs,
@@ -62,7 +33,7 @@ namespace
     )
     {
         const std::vector<std::string> row =
-            rowOf(diffs, {"640", "ISPH", "0.1", quantity, "FV-t"});
+            sphTest::tableRow(diffs, {"640", "ISPH", "0.1", quantity, "FV-t"});
         return row.size() == 8u ? std::stod(row[5]) : 1e9;
     }
 }
@@ -85,7 +56,7 @@ TEST(turbulentChannelTutorial, isphKEpsilonFollowsTheFvSpinUp)
 
     // Re method dr n y+_1 u*_wall log_max log_mean CPU_s clock_s t files drift
     const std::vector<std::string> sph =
-        rowOf(results/"runs.dat", {"640", "ISPH", "0.1"});
+        sphTest::tableRow(results/"runs.dat", {"640", "ISPH", "0.1"});
     ASSERT_EQ(sph.size(), 13u);
     EXPECT_EQ(sph[10], "2");
     EXPECT_LT(std::stod(sph[12]), 0.1);
@@ -100,8 +71,8 @@ TEST(turbulentChannelTutorial, isphKEpsilonFollowsTheFvSpinUp)
     const fileName yPlusFile =
         dir/"runs"/"test"/"Re640"/"sph_dr0.1"/"postProcessing"/"yPlus"/"0"
        /"yPlus.dat";
-    const std::vector<std::string> lower = rowOf(yPlusFile, {"2", "lowerWall"});
-    const std::vector<std::string> upper = rowOf(yPlusFile, {"2", "upperWall"});
+    const std::vector<std::string> lower = sphTest::tableRow(yPlusFile, {"2", "lowerWall"});
+    const std::vector<std::string> upper = sphTest::tableRow(yPlusFile, {"2", "upperWall"});
     ASSERT_EQ(lower.size(), 5u);
     ASSERT_EQ(upper.size(), 5u);
     EXPECT_NEAR(std::stod(lower[4]), std::stod(upper[4]), 1e-6*std::stod(upper[4]));
