@@ -43,6 +43,14 @@ Foam::SPH::isph::pressureGradientTypeNames
 });
 
 
+const Foam::Enum<Foam::SPH::isph::freeSurfaceConditionType>
+Foam::SPH::isph::freeSurfaceConditionNames
+({
+    { freeSurfaceConditionType::dirichlet, "dirichlet" },
+    { freeSurfaceConditionType::ghost, "ghost" },
+});
+
+
 namespace
 {
     // The viscous prediction, eq. (31): explicit (the paper) or implicit
@@ -122,6 +130,30 @@ void Foam::SPH::isph::addPrediction(const bool renormalised)
 }
 
 
+void Foam::SPH::isph::ghostCondition(const bool renormalised)
+{
+    const bool ghost = freeSurfaceConditionNames.getOrDefault
+    (
+        "freeSurfaceCondition", schemes_, freeSurfaceConditionType::dirichlet
+    ) == freeSurfaceConditionType::ghost;
+    if (!ghost || !freeSurface_)
+    {
+        return;
+    }
+    if (!renormalised)
+    {
+        FatalIOErrorInFunction(schemes_.lookup("freeSurfaceCondition"))
+            << "Entry freeSurfaceCondition ghost needs pressureGradient"
+            << " renormalised (its gradient completes G-{p})"
+            << exit(FatalIOError);
+    }
+    isphWork& w = *work_;
+    w.ghostSurface = true;
+    w.surfaceDistance = 0.5*dr_;
+    w.surfaceNormal.setSize(parts_.size(), Zero);
+}
+
+
 void Foam::SPH::isph::addStages()
 {
     const pressureGradientType gradient = pressureGradientTypeNames.getOrDefault
@@ -168,6 +200,7 @@ void Foam::SPH::isph::addStages()
     const bool moving = motion_->any();
     stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (30)"));
     if (moving) stages_.add(new moveWalls(w, runTime_, false));
+    ghostCondition(renormalised);
     stages_.add(new usawNeighbours(w, ""));
     addPrediction(renormalised);
     if (freeSurface_) stages_.add(new freeSurface(w, divRMax));

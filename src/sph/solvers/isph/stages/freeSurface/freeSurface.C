@@ -5,6 +5,8 @@
 #include "freeSurface.H"
 #include "usawOperators.H"
 #include "kernelDispatch.H"
+#include "ghostSurface.H"
+#include "unitConversion.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -25,6 +27,103 @@ Foam::label Foam::SPH::freeSurface::countSurface
         if (divR[i] <= divRMax) ++n;
     }
     return n;
+}
+
+
+void Foam::SPH::freeSurface::setNormals()
+{
+    // G{1} (37) over the fluid particles and the wetted walls only: the
+    // dry wall above a free surface would count the air beyond it as
+    // filled and tilt the normal of a particle by the wall away from it
+    // (25 degrees at the corner of still water on a lattice). A vertex
+    // particle is dry if it is flagged surface and no fluid particle is
+    // within 1.25 dr (the row at the water line has one at dr); a segment
+    // with one dry end counts half
+    isphWork& w = work_;
+    const label nFluid = w.nFluid;
+    const label* off = w.nbrs.offsets().cdata();
+    const label* nbr = w.nbrs.indices().cdata();
+    const vector2D* rij = w.nbrs.rij().cdata();
+    const scalar* r = w.nbrs.r().cdata();
+    const label* wOff = w.usaw.offsets().cdata();
+    const label* seg = w.usaw.segments().cdata();
+    const vector2D* gradGammaAs = w.usaw.gradGammaAs().cdata();
+    const labelPair* ends = w.usaw.segmentParticles().cdata();
+    const label* surface = w.surface.cdata();
+    const label n = w.parts.size();
+    const scalar wetReach = 1.25*2*w.surfaceDistance;
+    wet_.setSize(n);
+    for (label v = 0; v < n; ++v)
+    {
+        wet_[v] = v < nFluid || !surface[v];
+        for (label k = off[v]; k < off[v + 1] && !wet_[v]; ++k)
+        {
+            wet_[v] = nbr[k] < nFluid && r[k] < wetReach;
+        }
+    }
+    dispatch(w.W, [&](const auto& K)
+    {
+        if (w.latticeMoment == tensor2D::zero)
+        {
+            w.latticeMoment = ghostSurface::latticeMoment(K, 2*w.surfaceDistance);
+            Info<< "    ghost free surface: lattice moment "
+                << w.latticeMoment << " (about -I)" << endl;
+        }
+        for (label i = 0; i < nFluid; ++i)
+        {
+            if (!surface[i]) continue;
+            vector2D sum(Zero);
+            for (label k = off[i]; k < off[i + 1]; ++k)
+            {
+                const label b = nbr[k];
+                if (wet_[b])
+                {
+                    sum += w.V[b]*K.gradW(rij[k], r[k]);
+                }
+            }
+            for (label k = wOff[i]; k < wOff[i + 1]; ++k)
+            {
+                const labelPair& e = ends[seg[k]];
+                const scalar wet =
+                    0.5*(wet_[e.first()] + wet_[e.second()]);
+                sum -= wet*gradGammaAs[k];
+            }
+            gradOne_[i] = sum;
+        }
+    });
+
+    // G{1} points into the fluid; below 0.05/dr (a particle with
+    // neighbours all round, or a symmetric sheet) it gives no direction.
+    // A normal within 5 degrees of the nearest wall's tangent is put on it
+    // (water at rest meets a wall at right angles; the lattice's G{1} by a
+    // wall tilts it by 2 degrees, and the ghosts would then hold a corner
+    // particle's pressure 0.3 % low and draw it into the wall)
+    const scalar minGrad = 0.05/(2*w.surfaceDistance);
+    const scalar* dAs = w.usaw.distances().cdata();
+    const List<vector2D>& wallNormal = w.usaw.segmentNormals();
+    const scalar snap = std::sin(degToRad(5.0));
+    w.surfaceNormal = Zero;
+    for (label i = 0; i < nFluid; ++i)
+    {
+        const scalar g = mag(gradOne_[i]);
+        if (!surface[i] || g <= minGrad) continue;
+        vector2D nI(-gradOne_[i]/g);
+        label nearest = -1;
+        for (label k = wOff[i]; k < wOff[i + 1]; ++k)
+        {
+            if (nearest < 0 || mag(dAs[k]) < mag(dAs[nearest])) nearest = k;
+        }
+        if (nearest >= 0)
+        {
+            const vector2D& nw = wallNormal[seg[nearest]];
+            if (mag(nI & nw) < snap)
+            {
+                nI -= (nI & nw)*nw;
+                nI /= mag(nI);
+            }
+        }
+        w.surfaceNormal[i] = nI;
+    }
 }
 
 
@@ -90,6 +189,11 @@ void Foam::SPH::freeSurface::execute(const scalar dt)
             isNear = surface[nbr[k]] && r[k] < near;
         }
         nearSurface[i] = isNear;
+    }
+
+    if (w.ghostSurface)
+    {
+        setNormals();
     }
 }
 

@@ -44,7 +44,14 @@ void Foam::SPH::pressurePoisson::classifyRows(const Kernel& K)
         }
         if (i < nF)
         {
-            kind[i] = (surface[i] || !reached) ? dirichlet : equation;
+            const bool ghosts =
+                work_.ghostSurface && work_.surfaceNormal[i] != vector2D::zero;
+            kind[i] =
+                ((surface[i] && !ghosts) || !reached) ? dirichlet : equation;
+            if (kind[i] == dirichlet && work_.ghostSurface)
+            {
+                work_.surfaceNormal[i] = Zero;
+            }
         }
         else
         {
@@ -83,6 +90,11 @@ void Foam::SPH::pressurePoisson::setSources(const Kernel& K, const scalar dt)
         source_[i] = rho/dt*source_[i];
     }
 
+    if (w.ghostSurface)
+    {
+        ghostRows(K);
+    }
+
     // p = 0 at the free surface: A = -rho g.x, i.e. s f with s = -rho
     // (set at construction) and f = g.x
     scalarList& f = laplacian_.dirichletValues();
@@ -91,6 +103,42 @@ void Foam::SPH::pressurePoisson::setSources(const Kernel& K, const scalar dt)
     forAll(f, i)
     {
         f[i] = g & x[i];
+    }
+}
+
+
+template<class Kernel>
+void Foam::SPH::pressurePoisson::ghostRows(const Kernel& K)
+{
+    // Row a (minus the equation, B = 1): the ghosts add
+    // (A_a + rho g.x_a) M_a/delta + rho g.m_a, m_a = sum_b c_ab r_ab over
+    // the real neighbours, c_ab = -2 V_b (dW/dr/r)_ab/gamma_a
+    isphWork& w = work_;
+    const label* off = w.nbrs.offsets().cdata();
+    const label* nbr = w.nbrs.indices().cdata();
+    const vector2D* rij = w.nbrs.rij().cdata();
+    const scalar* r = w.nbrs.r().cdata();
+    const scalar* gamma = w.usaw.gamma().cdata();
+    const vector2DField& x = w.parts.positions();
+    const scalar delta = w.surfaceDistance;
+    ghostSp_ = Zero;
+    for (label i = 0; i < w.nFluid; ++i)
+    {
+        vector2D& n = w.surfaceNormal[i];
+        if (!w.surface[i] || n == vector2D::zero) continue;
+        vector2D m(Zero);
+        for (label k = off[i]; k < off[i + 1]; ++k)
+        {
+            m -= 2*w.V[nbr[k]]*K.dWdrByR(r[k])/gamma[i]*rij[k];
+        }
+        const scalar M = m & n;
+        if (!(M > 0))
+        {
+            n = Zero;
+            continue;
+        }
+        ghostSp_[i] = -M/delta;
+        source_[i] += w.rho0*((w.g & x[i])*M/delta + (w.g & m));
     }
 }
 
@@ -201,8 +249,13 @@ Foam::SPH::pressurePoisson::pressurePoisson
     source_(work.parts.size()),
     vertexNeighbours_(work.cloud.walls().points().size()),
     laplacian_(work.nbrs, work.usaw, work.V, work.nFluid),
-    nIterations_(0)
+    nIterations_(0),
+    ghostSp_(work.ghostSurface ? work.parts.size() : 0, Zero)
 {
+    if (work.ghostSurface)
+    {
+        laplacian_.implicitSource(ghostSp_);
+    }
     const dictionary& controls = solution.subOrEmptyDict("ISPH");
     stopIfNotConverged_ =
         controls.getOrDefault<bool>("stopIfNotConverged", stopIfNotConverged_);
