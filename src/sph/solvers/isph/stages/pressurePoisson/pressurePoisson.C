@@ -112,7 +112,11 @@ void Foam::SPH::pressurePoisson::ghostRows(const Kernel& K)
 {
     // Row a (minus the equation, B = 1): the ghosts add
     // (A_a + rho g.x_a) M_a/delta + rho g.m_a, m_a = sum_b c_ab r_ab over
-    // the real neighbours, c_ab = -2 V_b (dW/dr/r)_ab/gamma_a
+    // the real neighbours, c_ab = -2 V_b (dW/dr/r)_ab/gamma_a, M_a = m_a.n,
+    // with m_a taken along n (M_a n): its part along the surface comes
+    // from the neighbours' disorder and the walls, and with a normal tilted
+    // by theta would set p_a off rho |g| delta at first order in theta
+    // (along n: rho |g| delta cos(theta))
     isphWork& w = work_;
     const label* off = w.nbrs.offsets().cdata();
     const label* nbr = w.nbrs.indices().cdata();
@@ -138,7 +142,7 @@ void Foam::SPH::pressurePoisson::ghostRows(const Kernel& K)
             continue;
         }
         ghostSp_[i] = -M/delta;
-        source_[i] += w.rho0*((w.g & x[i])*M/delta + (w.g & m));
+        source_[i] += w.rho0*((w.g & x[i]) + delta*(w.g & n))*M/delta;
     }
 }
 

@@ -47,11 +47,16 @@ Foam::vector2D Foam::SPH::projection::ghostGradient
     }
 
     // The ghosts': -sum_v dr^2 (p_a - p_v) grad w_av with grad w_av =
-    // -F r_va, and -sum_v dr^2 r_av (x) grad w_av = -T_g
+    // -F r_va, and -sum_v dr^2 r_av (x) grad w_av = -T_g, both along n
+    // only (t = n.T_g.n): the tangential gradient comes from the real
+    // neighbours, and a normal tilted by theta changes the gradient of a
+    // linear pressure at second order in theta (with T_g itself, at first:
+    // still water by a wall disordered by the shifting drifted at 3e-4 m/s)
     const tensor2D Tg(w.latticeMoment - ghostSurface::neighbourMoment(K, w, a));
     const vector2D& n = w.surfaceNormal[a];
-    Gp += p[a]/w.surfaceDistance*(Tg & n);
-    Gr -= Tg;
+    const scalar t = n & (Tg & n);
+    Gp += p[a]/w.surfaceDistance*t*n;
+    Gr -= t*(n*n);
     return inv(Gr) & Gp;
 }
 
