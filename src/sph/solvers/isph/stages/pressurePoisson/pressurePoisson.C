@@ -175,6 +175,69 @@ void Foam::SPH::pressurePoisson::wallCondition(const scalar dt)
 }
 
 
+Foam::label Foam::SPH::pressurePoisson::anchorFloatingClusters()
+{
+    // A set of rows coupled only among themselves with no row that fixes
+    // the level (a Dirichlet value moved to the right-hand side, or a
+    // ghost row's diagonal, make a row strictly dominant) is singular: a
+    // droplet sliding down a wall, all its particles kept off the surface
+    // by the wall-crossing test (39), with the wall's vertex particles
+    // (the 4 mm obstacle dam-break's pressure solve failed so). Its fluid
+    // particles get p = 0
+    const sparseMatrix& M = laplacian_.matrix();
+    const label n = M.rows();
+    labelList& kind = laplacian_.kinds();
+    labelList cluster(n, -1);
+    DynamicList<label> members, stack;
+    label nFixed = 0;
+    for (label start = 0; start < n; ++start)
+    {
+        if (cluster[start] >= 0 || kind[start] == laplacianMatrix::dirichlet)
+        {
+            continue;
+        }
+        members.clear();
+        stack.clear();
+        stack.append(start);
+        cluster[start] = start;
+        bool anchored = false;
+        while (stack.size())
+        {
+            const label i = stack.remove();
+            members.append(i);
+            scalar diag = 0, off = 0;
+            for (sparseMatrix::InnerIterator it(M, i); it; ++it)
+            {
+                const label j = it.col();
+                if (j == i)
+                {
+                    diag = it.value();
+                    continue;
+                }
+                off += mag(it.value());
+                if (cluster[j] < 0)
+                {
+                    cluster[j] = start;
+                    stack.append(j);
+                }
+            }
+            anchored = anchored || diag > off*(1 + 1e-9);
+        }
+        if (anchored) continue;
+        for (const label i : members)
+        {
+            if (i < work_.nFluid)
+            {
+                kind[i] = laplacianMatrix::dirichlet;
+                work_.surfaceNormal[i] = Zero;
+                ++nFixed;
+            }
+        }
+    }
+    return nFixed;
+}
+
+
 void Foam::SPH::pressurePoisson::makeCompatible()
 {
     const scalar* gamma = work_.usaw.gamma().cdata();
@@ -254,6 +317,7 @@ Foam::SPH::pressurePoisson::pressurePoisson
     vertexNeighbours_(work.cloud.walls().points().size()),
     laplacian_(work.nbrs, work.usaw, work.V, work.nFluid),
     nIterations_(0),
+    nFloating_(0),
     ghostSp_(work.ghostSurface ? work.parts.size() : 0, Zero)
 {
     if (work.ghostSurface)
@@ -326,6 +390,11 @@ void Foam::SPH::pressurePoisson::execute(const scalar dt)
         setSources(K, dt);
         classifyRows(K);
         laplacian_.assemble(K, source_);
+        nFloating_ = w.ghostSurface ? anchorFloatingClusters() : 0;
+        if (nFloating_)
+        {
+            laplacian_.assemble(K, source_);
+        }
     });
     if (!freeSurface_)
     {

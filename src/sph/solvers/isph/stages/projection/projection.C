@@ -51,13 +51,21 @@ Foam::vector2D Foam::SPH::projection::ghostGradient
     // only (t = n.T_g.n): the tangential gradient comes from the real
     // neighbours, and a normal tilted by theta changes the gradient of a
     // linear pressure at second order in theta (with T_g itself, at first:
-    // still water by a wall disordered by the shifting drifted at 3e-4 m/s)
+    // still water by a wall disordered by the shifting drifted at 3e-4 m/s).
+    // Where the real neighbours hardly span the surface's direction (the
+    // tip of a jet: det below a tenth of the completed support's), T_g
+    // itself: the ghosts' tangential part, without which the tip's
+    // gradient is singular
     const tensor2D Tg(w.latticeMoment - ghostSurface::neighbourMoment(K, w, a));
     const vector2D& n = w.surfaceNormal[a];
     const scalar t = n & (Tg & n);
-    Gp += p[a]/w.surfaceDistance*t*n;
-    Gr -= t*(n*n);
-    return inv(Gr) & Gp;
+    const scalar pByDelta = p[a]/w.surfaceDistance;
+    const tensor2D GrAlongN(Gr - t*(n*n));
+    if (det(GrAlongN) > 0.1*det(Gr - Tg))
+    {
+        return inv(GrAlongN) & (Gp + pByDelta*t*n);
+    }
+    return inv(Gr - Tg) & (Gp + pByDelta*(Tg & n));
 }
 
 
@@ -79,7 +87,7 @@ void Foam::SPH::projection::pressureGradient
             {
                 for (label i = 0; i < w.nFluid; ++i)
                 {
-                    if (w.surface[i] && w.surfaceNormal[i] != vector2D::zero)
+                    if (w.surfaceNormal[i] != vector2D::zero)
                     {
                         gradP[i] = ghostGradient(K, w, p, i);
                     }
