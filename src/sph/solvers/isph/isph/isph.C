@@ -151,6 +151,11 @@ void Foam::SPH::isph::ghostCondition(const bool renormalised)
     w.ghostSurface = true;
     w.surfaceDistance = 0.5*dr_;
     w.surfaceNormal.setSize(parts_.size(), Zero);
+    w.compaction = checkedScalar
+    (
+        schemes_, "freeSurfaceCompaction", scalar(0), {0, 10},
+        "alpha of the free-surface rows' density source (ghost)"
+    );
 }
 
 

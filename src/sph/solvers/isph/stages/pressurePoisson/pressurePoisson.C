@@ -6,6 +6,7 @@
 #include "checkedEntry.H"
 #include "usawOperators.H"
 #include "kernelDispatch.H"
+#include "ghostSurface.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -92,7 +93,7 @@ void Foam::SPH::pressurePoisson::setSources(const Kernel& K, const scalar dt)
 
     if (w.ghostSurface)
     {
-        ghostRows(K);
+        ghostRows(K, dt);
     }
 
     // p = 0 at the free surface: A = -rho g.x, i.e. s f with s = -rho
@@ -108,7 +109,7 @@ void Foam::SPH::pressurePoisson::setSources(const Kernel& K, const scalar dt)
 
 
 template<class Kernel>
-void Foam::SPH::pressurePoisson::ghostRows(const Kernel& K)
+void Foam::SPH::pressurePoisson::ghostRows(const Kernel& K, const scalar dt)
 {
     // Row a (minus the equation, B = 1): the ghosts add
     // (A_a + rho g.x_a) M_a/delta + rho g.m_a, m_a = sum_b c_ab r_ab over
@@ -123,6 +124,7 @@ void Foam::SPH::pressurePoisson::ghostRows(const Kernel& K)
     const vector2D* rij = w.nbrs.rij().cdata();
     const scalar* r = w.nbrs.r().cdata();
     const scalar* gamma = w.usaw.gamma().cdata();
+    const label* wOff = w.usaw.offsets().cdata();
     const vector2DField& x = w.parts.positions();
     const scalar delta = w.surfaceDistance;
     ghostSp_ = Zero;
@@ -143,7 +145,42 @@ void Foam::SPH::pressurePoisson::ghostRows(const Kernel& K)
         }
         ghostSp_[i] = -M/delta;
         source_[i] += w.rho0*((w.g & x[i]) + delta*(w.g & n))*M/delta;
+        const bool wallInReach = wOff[i + 1] > wOff[i];
+        if (w.compaction > 0 && !wallInReach)
+        {
+            source_[i] += w.compaction*w.rho0*diluted(K, i, off, nbr, r)/sqr(dt);
+        }
     }
+}
+
+
+template<class Kernel>
+Foam::scalar Foam::SPH::pressurePoisson::diluted
+(
+    const Kernel& K,
+    const label i,
+    const label* off,
+    const label* nbr,
+    const scalar* r
+)
+{
+    // 1 - rho_a/rho0 - 0.02 (>= 0) with rho_a/rho0 the kernel sum over the real
+    // neighbours, the particle and the ghost lattice beyond the surface
+    // line, over the full lattice's (1 on the top row of a lattice)
+    const isphWork& w = work_;
+    const scalar dr = 2*w.surfaceDistance;
+    if (latticeSum_ == 0)
+    {
+        latticeSum_ = ghostSurface::halfPlaneSum(K, dr, vector2D(0, 1), -GREAT);
+    }
+    scalar sum = w.V[i]*K.W(0)
+      + ghostSurface::halfPlaneSum(K, dr, w.surfaceNormal[i], w.surfaceDistance);
+    for (label k = off[i]; k < off[i + 1]; ++k)
+    {
+        if (nbr[k] != i) sum += w.V[nbr[k]]*K.W(r[k]);
+    }
+    // Below 2 % the lattice's disorder (the shifting), not dilution
+    return max(1 - sum/latticeSum_ - 0.02, scalar(0));
 }
 
 
@@ -318,6 +355,7 @@ Foam::SPH::pressurePoisson::pressurePoisson
     laplacian_(work.nbrs, work.usaw, work.V, work.nFluid),
     nIterations_(0),
     nFloating_(0),
+    latticeSum_(0),
     ghostSp_(work.ghostSurface ? work.parts.size() : 0, Zero)
 {
     if (work.ghostSurface)
