@@ -55,8 +55,11 @@ TEST(isphFoamGhostSurface, hydrostaticTankStaysAtRest)
     ASSERT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
     ASSERT_EQ(run(bin + "isphFoam -case " + dir, out), 0)
         << out.substr(out.size() > 3000 ? out.size() - 3000 : 0);
-    EXPECT_NE(out.find("ghost values (freeSurfaceCondition ghost)"), std::string::npos)
-        << out;
+    EXPECT_NE
+    (
+        out.find("ghost values (freeSurfaceCondition ghost)"),
+        std::string::npos
+    ) << out;
 
     ASSERT_EQ
     (
@@ -67,9 +70,9 @@ TEST(isphFoamGhostSurface, hydrostaticTankStaysAtRest)
     const scalar pErr = std::stod(r.at("maxPressureError"));
     const scalar speed = std::stod(r.at("maxSpeedBySqrtGH"));
     const scalar moved = std::stod(r.at("maxDisplacementByDr"));
-    std::cout << "    ghost tank dr = 0.02, t = 2 s: max |p - rho g (H - y)|/(rho g H) "
-        << pErr << ", max |U|/sqrt(gH) " << speed << ", max displacement/dr "
-        << moved << std::endl;
+    std::cout << "    ghost tank dr = 0.02, t = 2 s: max |p - rho g (H - y)|"
+        << "/(rho g H) " << pErr << ", max |U|/sqrt(gH) " << speed
+        << ", max displacement/dr " << moved << std::endl;
 
     // check measures against H, the top row: p is rho g dr/2 higher, an
     // error of (dr/2)/H = 0.02 exactly (measured 0.0200059); at rest like

@@ -92,7 +92,8 @@ TEST(ghostSurface, ghostsOfATopRowParticleCarryTheHydrostaticGradient)
     SPH::dispatch(*W, [&](const auto& K)
     {
         const tensor2D Tg =
-            SPH::ghostSurface::latticeMoment(K, dr) - rowsMoment(K, dr, -100, 0);
+            SPH::ghostSurface::latticeMoment(K, dr)
+          - rowsMoment(K, dr, -100, 0);
         const tensor2D above = rowsMoment(K, dr, 1, 100);
         EXPECT_NEAR(mag(Tg - above), 0, 1e-12);
 

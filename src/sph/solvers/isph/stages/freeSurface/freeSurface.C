@@ -27,8 +27,8 @@ Foam::label Foam::SPH::freeSurface::nearestSegment(const label i) const
         const vector2D& a = x[ends[seg[k]].first()];
         const vector2D& b = x[ends[seg[k]].second()];
         const vector2D ab(b - a);
-        const scalar s =
-            min(max(((x[i] - a) & ab)/max(magSqr(ab), VSMALL), scalar(0)), scalar(1));
+        const scalar along = ((x[i] - a) & ab)/max(magSqr(ab), VSMALL);
+        const scalar s = min(max(along, scalar(0)), scalar(1));
         const scalar d = mag(x[i] - a - s*ab);
         if (d < least)
         {
@@ -91,7 +91,9 @@ Foam::vector2D Foam::SPH::freeSurface::mirroredGradOne
     const bool mirror = nearest >= 0;
     const vector2D nw
     (
-        mirror ? w.usaw.segmentNormals()[w.usaw.segments()[nearest]] : vector2D::zero
+        mirror
+      ? w.usaw.segmentNormals()[w.usaw.segments()[nearest]]
+      : vector2D::zero
     );
     const scalar da = mirror ? w.usaw.distances()[nearest] : 0;
     const scalar delta = w.surfaceDistance;
@@ -133,7 +135,8 @@ void Foam::SPH::freeSurface::setNormals()
     {
         if (w.latticeMoment == tensor2D::zero)
         {
-            w.latticeMoment = ghostSurface::latticeMoment(K, 2*w.surfaceDistance);
+            w.latticeMoment =
+                ghostSurface::latticeMoment(K, 2*w.surfaceDistance);
             Info<< "    ghost free surface: lattice moment "
                 << w.latticeMoment << " (about -I)" << endl;
         }

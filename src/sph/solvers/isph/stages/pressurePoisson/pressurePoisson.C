@@ -148,7 +148,8 @@ void Foam::SPH::pressurePoisson::ghostRows(const Kernel& K, const scalar dt)
         const bool wallInReach = wOff[i + 1] > wOff[i];
         if (w.compaction > 0 && !wallInReach)
         {
-            source_[i] += w.compaction*w.rho0*diluted(K, i, off, nbr, r)/sqr(dt);
+            source_[i] +=
+                w.compaction*w.rho0*diluted(K, i, off, nbr, r)/sqr(dt);
         }
     }
 }
@@ -164,9 +165,10 @@ Foam::scalar Foam::SPH::pressurePoisson::diluted
     const scalar* r
 )
 {
-    // 1 - rho_a/rho0 - 0.02 (>= 0) with rho_a/rho0 the kernel sum over the real
-    // neighbours, the particle and the ghost lattice beyond the surface
-    // line, over the full lattice's (1 on the top row of a lattice)
+    // 1 - rho_a/rho0 - 0.02 (>= 0) with rho_a/rho0 the kernel sum over
+    // the real neighbours, the particle and the ghost lattice beyond the
+    // surface line, over the full lattice's (1 on the top row of a
+    // lattice)
     const isphWork& w = work_;
     const scalar dr = 2*w.surfaceDistance;
     if (latticeSum_ == 0)
@@ -174,7 +176,10 @@ Foam::scalar Foam::SPH::pressurePoisson::diluted
         latticeSum_ = ghostSurface::halfPlaneSum(K, dr, vector2D(0, 1), -GREAT);
     }
     scalar sum = w.V[i]*K.W(0)
-      + ghostSurface::halfPlaneSum(K, dr, w.surfaceNormal[i], w.surfaceDistance);
+      + ghostSurface::halfPlaneSum
+        (
+            K, dr, w.surfaceNormal[i], w.surfaceDistance
+        );
     for (label k = off[i]; k < off[i + 1]; ++k)
     {
         if (nbr[k] != i) sum += w.V[nbr[k]]*K.W(r[k]);
