@@ -44,6 +44,14 @@ Foam::SPH::isph::pressureGradientTypeNames
 });
 
 
+const Foam::Enum<Foam::SPH::isph::freeSurfaceConditionType>
+Foam::SPH::isph::freeSurfaceConditionNames
+({
+    { freeSurfaceConditionType::dirichlet, "dirichlet" },
+    { freeSurfaceConditionType::ghost, "ghost" },
+});
+
+
 namespace
 {
     // The viscous prediction, eq. (31): explicit (the paper) or implicit
@@ -123,6 +131,35 @@ void Foam::SPH::isph::addPrediction(const bool renormalised)
 }
 
 
+void Foam::SPH::isph::ghostCondition(const bool renormalised)
+{
+    const bool ghost = freeSurfaceConditionNames.getOrDefault
+    (
+        "freeSurfaceCondition", schemes_, freeSurfaceConditionType::dirichlet
+    ) == freeSurfaceConditionType::ghost;
+    if (!ghost || !freeSurface_)
+    {
+        return;
+    }
+    if (!renormalised)
+    {
+        FatalIOErrorInFunction(schemes_.lookup("freeSurfaceCondition"))
+            << "Entry freeSurfaceCondition ghost needs pressureGradient"
+            << " renormalised (its gradient completes G-{p})"
+            << exit(FatalIOError);
+    }
+    isphWork& w = *work_;
+    w.ghostSurface = true;
+    w.surfaceDistance = 0.5*dr_;
+    w.surfaceNormal.setSize(parts_.size(), Zero);
+    w.compaction = checkedScalar
+    (
+        schemes_, "freeSurfaceCompaction", scalar(0), {0, 10},
+        "alpha of the free-surface rows' density source (ghost)"
+    );
+}
+
+
 void Foam::SPH::isph::addStages()
 {
     const pressureGradientType gradient = pressureGradientTypeNames.getOrDefault
@@ -169,6 +206,7 @@ void Foam::SPH::isph::addStages()
     const bool moving = motion_->any();
     stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (30)"));
     if (moving) stages_.add(new moveWalls(w, runTime_, false));
+    ghostCondition(renormalised);
     stages_.add(new usawNeighbours(w, ""));
     if (!turbulence_->isLaminar())
     {

@@ -5,8 +5,40 @@
 #include "freeSurface.H"
 #include "usawOperators.H"
 #include "kernelDispatch.H"
+#include "ghostSurface.H"
+#include "unitConversion.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::SPH::freeSurface::nearestSegment(const label i) const
+{
+    // The slot (in usaw's lists of i) of the segment nearest to particle
+    // i, by the distance to the segment itself (the line of a segment
+    // round a corner can pass next to a particle the segment is far from)
+    const isphWork& w = work_;
+    const label* wOff = w.usaw.offsets().cdata();
+    const label* seg = w.usaw.segments().cdata();
+    const labelPair* ends = w.usaw.segmentParticles().cdata();
+    const vector2DField& x = w.parts.positions();
+    label nearest = -1;
+    scalar least = GREAT;
+    for (label k = wOff[i]; k < wOff[i + 1]; ++k)
+    {
+        const vector2D& a = x[ends[seg[k]].first()];
+        const vector2D& b = x[ends[seg[k]].second()];
+        const vector2D ab(b - a);
+        const scalar along = ((x[i] - a) & ab)/max(magSqr(ab), VSMALL);
+        const scalar s = min(max(along, scalar(0)), scalar(1));
+        const scalar d = mag(x[i] - a - s*ab);
+        if (d < least)
+        {
+            least = d;
+            nearest = k;
+        }
+    }
+    return nearest;
+}
+
 
 Foam::label Foam::SPH::freeSurface::countSurface
 (
@@ -25,6 +57,122 @@ Foam::label Foam::SPH::freeSurface::countSurface
         if (divR[i] <= divRMax) ++n;
     }
     return n;
+}
+
+
+template<class Kernel>
+Foam::vector2D Foam::SPH::freeSurface::mirroredGradOne
+(
+    const Kernel& K,
+    const label i
+) const
+{
+    // G{1} (37) over the fluid particles only and, by a wall, their mirror
+    // images in the line half a spacing off the nearest segment (where the
+    // fluid's volumes end: the first row sits dr off the wall), so that the
+    // images continue the fluid's lattice. The walls' own terms (vertex
+    // particles and grad gamma_as) count the air beyond a dry wall as
+    // filled and tilt the normal of a particle by the wall away from it
+    // (25 degrees at the corner of still water); with the wetted walls
+    // only, still degrees on a lattice that does not meet the vertices row
+    // for row. The images give still water's corner particle a vertical
+    // normal on any wall discretisation (a right angle at the wall, the
+    // contact the model has anyway). A particle closer than 0.6 dr to the
+    // wall has no image (it would fall among the fluid).
+    // r_ab' = r_ab + 2 (d_b - delta) n_w to b's image, with
+    // d_b = d_a - r_ab.n_w b's distance from the wall's line
+    const isphWork& w = work_;
+    const label nFluid = w.nFluid;
+    const label* off = w.nbrs.offsets().cdata();
+    const label* nbr = w.nbrs.indices().cdata();
+    const vector2D* rij = w.nbrs.rij().cdata();
+    const scalar* r = w.nbrs.r().cdata();
+    const label nearest = nearestSegment(i);
+    const bool mirror = nearest >= 0;
+    const vector2D nw
+    (
+        mirror
+      ? w.usaw.segmentNormals()[w.usaw.segments()[nearest]]
+      : vector2D::zero
+    );
+    const scalar da = mirror ? w.usaw.distances()[nearest] : 0;
+    const scalar delta = w.surfaceDistance;
+    const scalar support = K.support();
+    vector2D sum(Zero);
+    bool self = false;
+    for (label k = off[i]; k < off[i + 1]; ++k)
+    {
+        const label b = nbr[k];
+        if (b >= nFluid) continue;
+        self = self || b == i;
+        sum += w.V[b]*K.gradW(rij[k], r[k]);
+        const scalar db = da - (rij[k] & nw);
+        if (!mirror || db < 1.2*delta) continue;
+        const vector2D rImage(rij[k] + 2*(db - delta)*nw);
+        const scalar rI = mag(rImage);
+        if (rI < support)
+        {
+            sum += w.V[b]*K.gradW(rImage, rI);
+        }
+    }
+    const scalar rSelf = 2*(da - delta);
+    if (mirror && !self && da >= 1.2*delta && rSelf < support)
+    {
+        sum += w.V[i]*K.gradW(rSelf*nw, rSelf);
+    }
+    return sum;
+}
+
+
+void Foam::SPH::freeSurface::setNormals()
+{
+    isphWork& w = work_;
+    const label nFluid = w.nFluid;
+    const label* seg = w.usaw.segments().cdata();
+    const List<vector2D>& wallNormal = w.usaw.segmentNormals();
+    const label* surface = w.surface.cdata();
+    dispatch(w.W, [&](const auto& K)
+    {
+        if (w.latticeMoment == tensor2D::zero)
+        {
+            w.latticeMoment =
+                ghostSurface::latticeMoment(K, 2*w.surfaceDistance);
+            Info<< "    ghost free surface: lattice moment "
+                << w.latticeMoment << " (about -I)" << endl;
+        }
+        #pragma omp parallel for schedule(static)
+        for (label i = 0; i < nFluid; ++i)
+        {
+            gradOne_[i] = surface[i] ? mirroredGradOne(K, i) : vector2D::zero;
+        }
+    });
+
+    // G{1} points into the fluid; below 0.05/dr (a particle with
+    // neighbours all round, or a symmetric sheet) it gives no direction.
+    // A normal within 5 degrees of the nearest wall's tangent is put on it
+    // (water at rest meets a wall at right angles; a tilt of the corner
+    // particle's normal by 2 degrees held its pressure 0.3 % low and drew
+    // it into the wall)
+    const scalar minGrad = 0.05/(2*w.surfaceDistance);
+    const scalar snap = std::sin(degToRad(5.0));
+    w.surfaceNormal = Zero;
+    for (label i = 0; i < nFluid; ++i)
+    {
+        const scalar g = mag(gradOne_[i]);
+        if (!surface[i] || g <= minGrad) continue;
+        vector2D nI(-gradOne_[i]/g);
+        const label nearest = nearestSegment(i);
+        if (nearest >= 0)
+        {
+            const vector2D& nw = wallNormal[seg[nearest]];
+            if (mag(nI & nw) < snap)
+            {
+                nI -= (nI & nw)*nw;
+                nI /= mag(nI);
+            }
+        }
+        w.surfaceNormal[i] = nI;
+    }
 }
 
 
@@ -90,6 +238,11 @@ void Foam::SPH::freeSurface::execute(const scalar dt)
             isNear = surface[nbr[k]] && r[k] < near;
         }
         nearSurface[i] = isNear;
+    }
+
+    if (w.ghostSurface)
+    {
+        setNormals();
     }
 }
 

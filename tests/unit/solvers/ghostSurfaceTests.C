@@ -1,0 +1,112 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    The lattice moments behind isphFoam's freeSurfaceCondition ghost
+    (src/sph/solvers/isph/stages/freeSurface/ghostSurface.H): the full
+    lattice's second moment sum_v dr^2 F(r_v) r_v r_v^T is -I up to the
+    lattice's quadrature, and for a particle on the top row of a half
+    lattice the ghosts' moments (the full lattice's minus the real rows')
+    are those of the rows above it, which the Poisson row and the gradient
+    use: with p_v = p_a (1 - r_va.n/delta) and p_a = rho |g| delta, the
+    ghosts' gradient part equals that of the hydrostatic pressure.
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "ghostSurface.H"
+#include "kernel.H"
+#include "kernelDispatch.H"
+#include "IStringStream.H"
+
+using namespace Foam;
+
+namespace
+{
+    autoPtr<SPH::kernel> wendland(const scalar dr)
+    {
+        IStringStream is("kernel wendlandC2; hByDr 2;");
+        const dictionary dict(is);
+        return SPH::kernel::New(dict, dr);
+    }
+
+    //- sum over lattice nodes d = dr (i, j) != 0 with j in [jMin, jMax]
+    //- of dr^2 F d d^T (the full lattice's: all j)
+    template<class Kernel>
+    tensor2D rowsMoment
+    (
+        const Kernel& K,
+        const scalar dr,
+        const label jMin,
+        const label jMax
+    )
+    {
+        const label m = label(K.support()/dr) + 1;
+        tensor2D T(Zero);
+        for (label i = -m; i <= m; ++i)
+        {
+            for (label j = max(jMin, -m); j <= min(jMax, m); ++j)
+            {
+                const vector2D d(dr*i, dr*j);
+                if ((i || j) && mag(d) < K.support())
+                {
+                    T += dr*dr*K.dWdrByR(mag(d))*(d*d);
+                }
+            }
+        }
+        return T;
+    }
+}
+
+
+TEST(ghostSurface, latticeMomentIsMinusIdentity)
+{
+    for (const scalar dr : {0.01, 0.004})
+    {
+        const autoPtr<SPH::kernel> W(wendland(dr));
+        SPH::dispatch(*W, [&](const auto& K)
+        {
+            const tensor2D T = SPH::ghostSurface::latticeMoment(K, dr);
+            // Measured -0.99920 on the diagonal at h = 2 dr (the lattice
+            // quadrature of -I); the off-diagonal vanishes by symmetry
+            EXPECT_NEAR(T.xx(), -1, 2e-3) << "dr " << dr;
+            EXPECT_NEAR(T.yy(), -1, 2e-3) << "dr " << dr;
+            EXPECT_NEAR(T.xy(), 0, 1e-12) << "dr " << dr;
+            EXPECT_NEAR(T.yx(), 0, 1e-12) << "dr " << dr;
+            // Independent of dr: F ~ 1/h^4, r^2 ~ h^2, dr^2 ~ h^2
+            EXPECT_NEAR(T.xx(), rowsMoment(K, dr, -100, 100).xx(), 1e-12);
+        });
+    }
+}
+
+
+TEST(ghostSurface, ghostsOfATopRowParticleCarryTheHydrostaticGradient)
+{
+    // A particle on the top row of a half lattice (rows j <= 0): its
+    // ghosts are the rows j >= 1. The gradient's ghost part
+    // p_a/delta T_g n (projection.C) must equal -T_g grad p for the
+    // hydrostatic grad p = -rho |g| n when p_a = rho |g| delta, and T_g
+    // (lattice minus real) must be the rows above
+    const scalar dr = 0.01, delta = dr/2, rhoG = 1000*9.81;
+    const autoPtr<SPH::kernel> W(wendland(dr));
+    SPH::dispatch(*W, [&](const auto& K)
+    {
+        const tensor2D Tg =
+            SPH::ghostSurface::latticeMoment(K, dr)
+          - rowsMoment(K, dr, -100, 0);
+        const tensor2D above = rowsMoment(K, dr, 1, 100);
+        EXPECT_NEAR(mag(Tg - above), 0, 1e-12);
+
+        const vector2D n(0, 1);
+        const scalar pA = rhoG*delta;
+        const vector2D ghostPart = pA/delta*(Tg & n);
+        const vector2D hydrostatic = -(Tg & vector2D(-rhoG*n));
+        EXPECT_NEAR(mag(ghostPart - hydrostatic), 0, 1e-9*rhoG);
+        // The ghosts are about half the support: n.T_g.n near -1/2
+        EXPECT_LT(n & (Tg & n), -0.3);
+        EXPECT_GT(n & (Tg & n), -0.7);
+    });
+}
+
+
+// ************************************************************************* //
