@@ -14,11 +14,12 @@ import numpy as np
 QUANTITIES = ("u", "k", "eps", "nut")
 nan = float("nan")
 
-# The project's shared reference data sit beside the project folder
+# The DNS kept with the project (etc/reference), or SPHFOAM_REFERENCE
 dnsFile = os.environ.get(
     "SPHFOAM_REFERENCE",
-    os.path.join(os.environ.get("SPHFOAM_PROJECT_DIR", "."), "..", "shared",
-                 "reference", "channel_dns_retau590.csv"))
+    os.path.join(os.environ.get("SPHFOAM_PROJECT_DIR", os.path.join(
+        os.path.dirname(os.path.abspath(__file__)), "..", "..", "..")),
+        "etc", "reference", "channel_dns_retau590.csv"))
 
 
 def strip_comments(text):

@@ -131,35 +131,6 @@ void Foam::SPH::isph::addPrediction(const bool renormalised)
 }
 
 
-void Foam::SPH::isph::ghostCondition(const bool renormalised)
-{
-    const bool ghost = freeSurfaceConditionNames.getOrDefault
-    (
-        "freeSurfaceCondition", schemes_, freeSurfaceConditionType::dirichlet
-    ) == freeSurfaceConditionType::ghost;
-    if (!ghost || !freeSurface_)
-    {
-        return;
-    }
-    if (!renormalised)
-    {
-        FatalIOErrorInFunction(schemes_.lookup("freeSurfaceCondition"))
-            << "Entry freeSurfaceCondition ghost needs pressureGradient"
-            << " renormalised (its gradient completes G-{p})"
-            << exit(FatalIOError);
-    }
-    isphWork& w = *work_;
-    w.ghostSurface = true;
-    w.surfaceDistance = 0.5*dr_;
-    w.surfaceNormal.setSize(parts_.size(), Zero);
-    w.compaction = checkedScalar
-    (
-        schemes_, "freeSurfaceCompaction", scalar(0), {0, 10},
-        "alpha of the free-surface rows' density source (ghost)"
-    );
-}
-
-
 void Foam::SPH::isph::addStages()
 {
     const pressureGradientType gradient = pressureGradientTypeNames.getOrDefault

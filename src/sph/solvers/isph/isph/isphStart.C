@@ -4,7 +4,7 @@
 Description
     The start of an isphFoam run: the particles from constant/sphMesh (or
     the restart time), the initial velocity, the cloud and its domain, the
-    USAW walls and the particle volumes.
+    USAW walls and the particle volumes, and the free-surface condition.
 
 \*---------------------------------------------------------------------------*/
 
@@ -16,6 +16,7 @@ Description
 #include "mathematicalConstants.H"
 #include "moveWalls.H"
 #include "particleChecks.H"
+#include "checkedEntry.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -85,6 +86,35 @@ void Foam::SPH::isph::initialise(const scalar rho0)
 
     Info<< "Particles: " << nFluid_ << " fluid, " << nVertices
         << " wall vertices" << nl << endl;
+}
+
+
+void Foam::SPH::isph::ghostCondition(const bool renormalised)
+{
+    const bool ghost = freeSurfaceConditionNames.getOrDefault
+    (
+        "freeSurfaceCondition", schemes_, freeSurfaceConditionType::dirichlet
+    ) == freeSurfaceConditionType::ghost;
+    if (!ghost || !freeSurface_)
+    {
+        return;
+    }
+    if (!renormalised)
+    {
+        FatalIOErrorInFunction(schemes_.lookup("freeSurfaceCondition"))
+            << "Entry freeSurfaceCondition ghost needs pressureGradient"
+            << " renormalised (its gradient completes G-{p})"
+            << exit(FatalIOError);
+    }
+    isphWork& w = *work_;
+    w.ghostSurface = true;
+    w.surfaceDistance = 0.5*dr_;
+    w.surfaceNormal.setSize(parts_.size(), Zero);
+    w.compaction = checkedScalar
+    (
+        schemes_, "freeSurfaceCompaction", scalar(0), {0, 10},
+        "alpha of the free-surface rows' density source (ghost)"
+    );
 }
 
 
