@@ -90,7 +90,7 @@ void Foam::SPH::kEpsilon::vertexValues
             for (label m = 0; m < nSeg; ++m)
             {
                 const scalar d = max(-(rij[j] & normal[segs[m]]), dr);
-                sumEps[m] += Vw*(eps[b] + cWall*std::pow(k[b], 1.5)/d);
+                sumEps[m] += Vw*(eps[b] + cWall*k[b]*std::sqrt(k[b])/d);
             }
         }
         if (alpha > 0 && nSeg > 0)

@@ -79,11 +79,11 @@ void Foam::SPH::viscousPrediction::execute(const scalar dt)
     {
         turbulentViscous();
         moveVertexVelocities(dt);
+        const vector2DField& U = w.parts.field<vector2D>("U");
         for (label i = 0; i < w.nFluid; ++i)
         {
-            w.Ustar[i] = w.parts.field<vector2D>("U")[i] + dt*visc_[i];
+            w.Ustar[i] = U[i] + dt*visc_[i];
         }
-        const vector2DField& U = w.parts.field<vector2D>("U");
         for (label i = w.nFluid; i < w.parts.size(); ++i)
         {
             w.Ustar[i] = U[i];
