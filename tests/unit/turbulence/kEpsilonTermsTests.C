@@ -67,6 +67,9 @@ TEST(kEpsilonTerms, productionOnALinearShear)
         const scalar P2 = SPH::kEpsilon::production(k, 10, G[i], Cmu);
         EXPECT_NEAR(P1, 1e-3*a*a, tol*1e-3*a*a) << "y " << c.x[i].y();
         EXPECT_NEAR(P2, 0.3*k*a, tol*0.3*k*a) << "y " << c.x[i].y();
+        // production quadratic: nu_T S^2 whatever sqrt(Cmu) k S
+        const scalar P3 = SPH::kEpsilon::production(k, 10, G[i], Cmu, false);
+        EXPECT_NEAR(P3, 10*a*a, tol*10*a*a) << "y " << c.x[i].y();
         ++checked;
     }
     EXPECT_GT(checked, 100);
@@ -87,7 +90,8 @@ TEST(kEpsilonTerms, epsilonDiffusionInALogLayerWithTheWallTerm)
     {
         const scalar yi = max(y(i), 0.5*dr);   // vertices: see vertexValues
         eps[i] = 1/(kappa*yi);
-        D[i] = kappa*yi/sigmaEps;
+        // nu_T = 0 at the vertex particles, as kEpsilon has it
+        D[i] = i < c.nFluid ? kappa*yi/sigmaEps : 0;
     }
     labelListList vertexSegments(n - c.nFluid);
     forAll(c.usaw->segmentParticles(), s)
@@ -111,7 +115,10 @@ TEST(kEpsilonTerms, epsilonDiffusionInALogLayerWithTheWallTerm)
     });
 
     // The first row (at dr, the row the wall term (A.4) is made for)
-    // within 25 % of the exact diffusion, and 20 % on rows 5 to 12;
+    // within 1 % of the exact diffusion (0.02 % measured; 21 % when the
+    // vertices had nu_T = kappa dr/2 instead of 0: the vertex value (A.7)
+    // assumes the pair's coefficient to be 2 nu_T at mid-distance,
+    // nu_T,a + 0), and 20 % on rows 5 to 12;
     // between them the kernel smooths the 1/y field over its support
     // (rows 2-4 up to 1.9 times the exact value), positive all the same.
     // Without the wall term the first row would be far off.
@@ -148,7 +155,7 @@ TEST(kEpsilonTerms, epsilonDiffusionInALogLayerWithTheWallTerm)
         }
     }
     EXPECT_GT(checked, 5);
-    EXPECT_LT(worstFirst, 0.25) << "first row";
+    EXPECT_LT(worstFirst, 0.01) << "first row";
     EXPECT_LT(worstFar, 0.20) << "rows 5 on";
     EXPECT_GT(worstWithoutWall, 0.5) << "first row without the wall term";
 }

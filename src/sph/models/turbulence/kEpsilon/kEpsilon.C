@@ -12,6 +12,7 @@
 #include "stage.H"
 #include "Time.H"
 #include "Switch.H"
+#include "Enum.H"
 #include "addToRunTimeSelectionTable.H"
 
 #include <cmath>
@@ -28,6 +29,19 @@ namespace SPH
 }
 
 
+namespace
+{
+    // Eq. (20) of Leroy et al. 2014 (after Guimet & Laurence 2002, as
+    // Code_Saturne's k-epsilon LP), or nu_T S^2 alone (OpenFOAM's kEpsilon)
+    enum class productionForm { linear, quadratic };
+    const Foam::Enum<productionForm> productionNames
+    ({
+        { productionForm::linear, "linear" },
+        { productionForm::quadratic, "quadratic" },
+    });
+}
+
+
 // * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::SPH::kEpsilon::production
@@ -35,13 +49,14 @@ Foam::scalar Foam::SPH::kEpsilon::production
     const scalar k,
     const scalar nut,
     const tensor2D& gradU,
-    const scalar Cmu
+    const scalar Cmu,
+    const bool linear
 )
 {
     // S = sqrt(2 S:S), S the symmetric part of grad u (21)
     const scalar S2 =
         2*(sqr(gradU.xx()) + sqr(gradU.yy())) + sqr(gradU.xy() + gradU.yx());
-    return min(std::sqrt(Cmu)*k*std::sqrt(S2), nut*S2);
+    return linear ? min(std::sqrt(Cmu)*k*std::sqrt(S2), nut*S2) : nut*S2;
 }
 
 
@@ -79,9 +94,22 @@ void Foam::SPH::kEpsilon::updateNut()
     const scalarField& k = parts_.field<scalar>("k");
     const scalarField& eps = parts_.field<scalar>("epsilon");
     scalarField& nut = parts_.field<scalar>("nut");
-    forAll(nut, i)
+    const label nFluid = work_->nFluid;
+    for (label i = 0; i < nFluid; ++i)
     {
         nut[i] = eps[i] > 0 ? Cmu_*k[i]*k[i]/eps[i] : 0;
+    }
+
+    // nu_T vanishes at a wall: the wall shear enters through the log law
+    // of (22) alone, not again through the vertex pairs of the viscous
+    // sum; and in the diffusion of epsilon the vertex pair's coefficient
+    // nu_T,a + 0 is then 2 nu_T at mid-distance, the flux that the vertex
+    // value (A.7) assumes. Cmu k_v^2/epsilon_v instead (epsilon_v of (29)
+    // is several times the first row's) slowed the first rows: k+ and
+    // eps+ 20-25 % below FV's there (Re* = 640, dr = 0.1 and 0.05)
+    for (label v = nFluid; v < nut.size(); ++v)
+    {
+        nut[v] = 0;
     }
 }
 
@@ -99,7 +127,7 @@ void Foam::SPH::kEpsilon::sources(const Kernel& K)
     usaw::gradMinus(K, w.nbrs, w.usaw, w.V, U, gradU_);
     for (label i = 0; i < w.nFluid; ++i)
     {
-        P_[i] = production(k[i], nut[i], gradU_[i], Cmu_);
+        P_[i] = production(k[i], nut[i], gradU_[i], Cmu_, linearProduction_);
     }
 
     // Eqs. (25) and (27), with B = nu + nu_T/sigma
@@ -142,14 +170,13 @@ void Foam::SPH::kEpsilon::nonPositive
     const scalar value
 ) const
 {
+    // The time loop adds the particle's id and position
     throw stageFailure
     (
-        "kEpsilon: " + name + " of fluid particle " + Foam::name(i) + " at "
-      + Foam::name(parts_.positions()[i].x()) + " "
-      + Foam::name(parts_.positions()[i].y()) + " would be " + Foam::name(value)
-      + " after the step from t = " + Foam::name(runTime_.value())
-      + " (k and epsilon must stay positive: a smaller time step, maxCo,"
-        " or initial k and epsilon closer to the flow)",
+        "kEpsilon: k and epsilon must stay positive (a smaller time step,"
+        " maxCo, or initial k and epsilon closer to the flow): " + name
+      + " would be " + Foam::name(value) + " in the step to t = "
+      + Foam::name(runTime_.value()) + " for",
         i
     );
 }
@@ -170,6 +197,7 @@ Foam::SPH::kEpsilon::kEpsilon
     C2_(1.92),
     sigmak_(1.0),
     sigmaEps_(1.3),
+    linearProduction_(true),
     wallLaw_(0.41, 5.2)
 {
     const dictionary& coeffs = ras.subOrEmptyDict("kEpsilonCoeffs");
@@ -178,10 +206,15 @@ Foam::SPH::kEpsilon::kEpsilon
     C2_ = checkedScalar(coeffs, "C2", C2_, {0, VGREAT, true});
     sigmak_ = checkedScalar(coeffs, "sigmak", sigmak_, {0, VGREAT, true});
     sigmaEps_ = checkedScalar(coeffs, "sigmaEps", sigmaEps_, {0, VGREAT, true});
+    linearProduction_ = productionNames.getOrDefault
+    (
+        "production", coeffs, productionForm::linear
+    ) == productionForm::linear;
     if (ras.getOrDefault<Switch>("printCoeffs", false))
     {
         Info<< "kEpsilonCoeffs { Cmu " << Cmu_ << "; C1 " << C1_ << "; C2 "
             << C2_ << "; sigmak " << sigmak_ << "; sigmaEps " << sigmaEps_
+            << "; production " << (linearProduction_ ? "linear" : "quadratic")
             << "; } log law kappa " << wallLaw_.kappa() << ", B "
             << wallLaw_.B() << nl;
     }
