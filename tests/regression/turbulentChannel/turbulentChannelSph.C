@@ -56,6 +56,22 @@ namespace
     }
 
 
+    // A copy of the tutorial with its SPH test run done (Allrun -test
+    // -sph: isphFoam to t = 2 s): the run's folder, empty on failure
+    fileName sphTestRun(const std::string& name)
+    {
+        const fileName dir = sphTest::copyTutorial("turbulence/channel", name);
+        sphTest::run("rm -rf " + dir + "/runs " + dir + "/results");
+        std::string out;
+        if (sphTest::runWithBashrc(dir + "/Allrun -test -sph", out) != 0)
+        {
+            ADD_FAILURE() << out;
+            return fileName();
+        }
+        return dir/"runs"/"test"/"Re640"/"sph_dr0.1";
+    }
+
+
     double maxDifference
     (
         const fileName& diffs,
@@ -113,12 +129,8 @@ TEST(turbulentChannelTutorial, isphKEpsilonFollowsTheFvSpinUp)
 
 TEST(turbulentChannelTutorial, aWallPatchWithoutAWallFunctionIsRefused)
 {
-    const fileName dir =
-        sphTest::copyTutorial("turbulence/channel", "turbulentChannelBadK");
-    sphTest::run("rm -rf " + dir + "/runs " + dir + "/results");
-    std::string out;
-    ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun -test -sph", out), 0) << out;
-    const fileName run = dir/"runs"/"test"/"Re640"/"sph_dr0.1";
+    const fileName run = sphTestRun("turbulentChannelBadK");
+    ASSERT_FALSE(run.empty());
     sphTest::run("sed -i 's/kqRWallFunction/zeroGradient/' " + run + "/0/k");
     std::string log;
     const int rc = sphTest::runWithBashrc
@@ -134,12 +146,8 @@ TEST(turbulentChannelTutorial, aWallPatchWithoutAWallFunctionIsRefused)
 
 TEST(turbulentChannelTutorial, aStepThatWouldMakeKNegativeStopsTheRun)
 {
-    const fileName dir =
-        sphTest::copyTutorial("turbulence/channel", "turbulentChannelNegativeK");
-    sphTest::run("rm -rf " + dir + "/runs " + dir + "/results");
-    std::string out;
-    ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun -test -sph", out), 0) << out;
-    const fileName run = dir/"runs"/"test"/"Re640"/"sph_dr0.1";
+    const fileName run = sphTestRun("turbulentChannelNegativeK");
+    ASSERT_FALSE(run.empty());
     setFirstValue(run/"2"/"lagrangian"/"sph"/"k", 1e4);
     sphTest::run
     (
