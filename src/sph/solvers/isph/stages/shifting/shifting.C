@@ -8,6 +8,27 @@
 
 #include <cmath>
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::shifting::neighbourRange(const scalarField& f)
+{
+    const isphWork& w = work_;
+    const label* off = w.nbrs.offsets().cdata();
+    const label* nbr = w.nbrs.indices().cdata();
+    for (label i = 0; i < w.nFluid; ++i)
+    {
+        scalar lo = f[i], hi = f[i];
+        for (label j = off[i]; j < off[i + 1]; ++j)
+        {
+            lo = min(lo, f[nbr[j]]);
+            hi = max(hi, f[nbr[j]]);
+        }
+        fMin_[i] = lo;
+        fMax_[i] = hi;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::SPH::shifting::execute(const scalar dt)
@@ -43,10 +64,12 @@ void Foam::SPH::shifting::execute(const scalar dt)
         {
             usaw::gradMinus(K, w.nbrs, w.usaw, w.V, f, gradF_);
         });
+        neighbourRange(f);
         for (label i = 0; i < w.nFluid; ++i)
         {
             if (nearSurface[i]) continue;
-            f[i] += -coeff*gradC_[i] & gradF_[i];
+            const scalar corrected = f[i] + (-coeff*gradC_[i] & gradF_[i]);
+            f[i] = min(max(corrected, fMin_[i]), fMax_[i]);
         }
     }
 
