@@ -58,6 +58,7 @@ def read_log(case, app):
         return out
     timing = re.compile(r"^ExecutionTime = (\S+) s\s+ClockTime = (\S+) s")
     steps = re.compile(r"^Steps (\d+),")
+    failedAt = re.compile(r"\(time step (\d+), deltaT")
     with open(path, errors="replace") as f:
         for line in f:
             m = timing.match(line)
@@ -71,6 +72,9 @@ def read_log(case, app):
                     pass
             elif steps.match(line):
                 out["sphSteps"] = int(steps.match(line).group(1))
+            elif failedAt.search(line):
+                # A run stopped by a failure: the step it failed in
+                out["sphSteps"] = int(failedAt.search(line).group(1))
             elif line.startswith("End"):
                 out["end"] = True
     if "sphSteps" in out:
