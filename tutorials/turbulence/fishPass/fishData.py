@@ -1,0 +1,216 @@
+"""Readers of the fish-pass runs for ./compare (tutorials/turbulence/
+fishPass): a run's system/fishParameters and log, the FV sections
+(postProcessing/sections, system/sections) and cell values, the SPH
+particles of the last file of VTK/<case>.vtp.series, and the section
+lines and pool outline of README.md.
+"""
+import json
+import os
+import re
+
+import numpy as np
+
+nan = float("nan")
+
+# Quantities along the sections: name -> label
+QUANTITIES = (("Umag", "|U| [m/s]"), ("Ux", "Ux [m/s]"), ("Uy", "Uy [m/s]"),
+              ("p", "p/rho - mean [m2/s2]"), ("k", "k [m2/s2]"),
+              ("epsilon", "epsilon [m2/s3]"))
+
+# The sections in slot widths b (system/sections): start, end
+SECTIONS = {"P1": ((1, 0), (1, 8)), "P2": ((3.5, 0), (3.5, 8)),
+            "P3": ((6, 0), (6, 8)), "P4": ((0, 0.1), (8, 0.1))}
+SLOT = ((8.5, 1.25), (8.5, 2.25))
+# The slot's direction (its sides slope 1:2)
+SLOT_DIRECTION = np.array([2.0, 1.0])/np.sqrt(5.0)
+
+# The fluid's outline in b (blockMeshDict): the pool less the baffles
+SOLIDS = [[(8, 0), (9, 0), (9, 1.5), (8, 1)],                   # short baffle
+          [(7, 2), (8, 2), (9, 2.5), (9, 8), (8, 8), (8, 3), (7, 3)]]  # long
+
+
+def strip_comments(text):
+    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
+    return re.sub(r"//[^\n]*", "", text)
+
+
+def read_parameters(case):
+    """The numeric 'key value;' entries of system/fishParameters."""
+    path = os.path.join(case, "system", "fishParameters")
+    text = re.sub(r"FoamFile\s*\{[^}]*\}", "", strip_comments(open(path).read()))
+    values = {}
+    for key, value in re.findall(r"^\s*(\w+)\s+([^;{}$#]+?)\s*;", text, flags=re.M):
+        try:
+            values[key] = float(value)
+        except ValueError:
+            pass
+    for key in ("b", "L", "B", "dr", "nb", "rho", "tEnd"):
+        if key not in values:
+            raise RuntimeError("%s: no numeric entry '%s'" % (path, key))
+    return values
+
+
+def read_log(case, app):
+    """{cpu, clock, t, steps} from log.<app>; NaN where missing."""
+    path = os.path.join(case, "log." + app)
+    out = {"cpu": nan, "clock": nan, "t": nan, "steps": 0, "end": False}
+    if not os.path.isfile(path):
+        return out
+    timing = re.compile(r"^ExecutionTime = (\S+) s\s+ClockTime = (\S+) s")
+    steps = re.compile(r"^Steps (\d+),")
+    failedAt = re.compile(r"\(time step (\d+), deltaT")
+    with open(path, errors="replace") as f:
+        for line in f:
+            m = timing.match(line)
+            if m:
+                out["cpu"], out["clock"] = float(m.group(1)), float(m.group(2))
+            elif line.startswith("Time = "):
+                out["steps"] += 1
+                try:
+                    out["t"] = float(line.split()[2])
+                except (IndexError, ValueError):
+                    pass
+            elif steps.match(line):
+                out["sphSteps"] = int(steps.match(line).group(1))
+            elif failedAt.search(line):
+                # A run stopped by a failure: the step it failed in
+                out["sphSteps"] = int(failedAt.search(line).group(1))
+            elif line.startswith("End"):
+                out["end"] = True
+    if "sphSteps" in out:
+        out["steps"] = out.pop("sphSteps")
+    return out
+
+
+def time_dirs(path):
+    names = []
+    for name in os.listdir(path) if os.path.isdir(path) else []:
+        try:
+            names.append((float(name), name))
+        except ValueError:
+            pass
+    return [name for _, name in sorted(names)]
+
+
+def fv_set(case, name):
+    """{x, y, Ux, Uy, Umag, p, k, epsilon, nut} along a set of
+    system/sections at the last sampled time (raw: x y z then the fields
+    in the order of the file name <set>_<f1>_<f2>...xy)."""
+    base = os.path.join(case, "postProcessing", "sections")
+    times = time_dirs(base)
+    if not times:
+        raise RuntimeError("%s: no postProcessing/sections/<time>/" % case)
+    folder = os.path.join(base, times[-1])
+    out = {"time": float(times[-1])}
+    for fname in sorted(os.listdir(folder)):
+        m = re.fullmatch(re.escape(name) + r"_(.+)\.xy", fname)
+        if not m:
+            continue
+        data = np.loadtxt(os.path.join(folder, fname), ndmin=2)
+        out["x"], out["y"] = data[:, 0], data[:, 1]
+        column = 3
+        for field in m.group(1).split("_"):
+            if field == "U":
+                out["Ux"], out["Uy"] = data[:, column], data[:, column + 1]
+                column += 3
+            else:
+                out[field] = data[:, column]
+                column += 1
+    if "Ux" not in out:
+        raise RuntimeError("%s has no %s_U.xy" % (folder, name))
+    out["Umag"] = np.hypot(out["Ux"], out["Uy"])
+    return out
+
+
+def read_internal_field(path):
+    """The internalField of an ascii OpenFOAM field: (n,) or (n, 3)."""
+    text = open(path).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
+    if not m:
+        raise RuntimeError("%s: no nonuniform ascii internalField" % path)
+    n = int(m.group(2))
+    body = text[m.end():]
+    if m.group(1) == "vector":
+        values = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
+        return np.array([[float(v) for v in s.split()] for s in values[:n]])
+    return np.array(body[:body.index(")")].split()[:n], dtype=float)
+
+
+def fv_cells(case):
+    """Cell centres and U at the last time (writeCellCentres: field C)."""
+    times = [t for t in time_dirs(case) if float(t) > 0]
+    if not times:
+        raise RuntimeError("%s: no time folder after 0" % case)
+    last = os.path.join(case, times[-1])
+    return read_internal_field(os.path.join(last, "C")), \
+        read_internal_field(os.path.join(last, "U")), float(times[-1])
+
+
+def sph_series(case):
+    """VTK/<case>.vtp.series of the fluid (not the walls', not sphMesh's)."""
+    vtk = os.path.join(case, "VTK")
+    own = os.path.join(vtk, os.path.basename(os.path.abspath(case)) + ".vtp.series")
+    if os.path.isfile(own):
+        return own
+    raise RuntimeError("%s: no VTK/<case>.vtp.series" % case)
+
+
+def read_vtp(path):
+    """The fluid particles (type 0): {x, y, Ux, Uy, Umag, p, k, epsilon,
+    nut} (p as written, in Pa)."""
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    pd = data.GetPointData()
+    if data.GetPoints() is None or pd.GetArray("type") is None:
+        raise RuntimeError("%s has no points or no point data type" % path)
+    x = vtk_to_numpy(data.GetPoints().GetData())
+    fluid = vtk_to_numpy(pd.GetArray("type")).ravel() == 0
+    out = {"x": x[fluid, 0].astype(float), "y": x[fluid, 1].astype(float)}
+    U = vtk_to_numpy(pd.GetArray("U")).reshape(len(x), -1)
+    out["Ux"], out["Uy"] = U[fluid, 0].astype(float), U[fluid, 1].astype(float)
+    out["Umag"] = np.hypot(out["Ux"], out["Uy"])
+    for name in ("p", "k", "epsilon", "nut"):
+        if pd.GetArray(name) is not None:
+            out[name] = vtk_to_numpy(pd.GetArray(name)).ravel()[fluid].astype(float)
+    return out
+
+
+def sph_last(case):
+    """The particles of the first and the last file of the series, and the
+    last time."""
+    series = sph_series(case)
+    files = json.load(open(series)).get("files", [])
+    if not files:
+        raise RuntimeError("%s lists no files" % series)
+    files = sorted(files, key=lambda f: float(f["time"]))
+    folder = os.path.dirname(series)
+    return read_vtp(os.path.join(folder, files[0]["name"])), \
+        read_vtp(os.path.join(folder, files[-1]["name"])), float(files[-1]["time"])
+
+
+def sph_line(particles, start, end, dr):
+    """The particles within dr/2 of the segment start-end [m], binned along
+    it in bins dr long: {s, x, y, <fields>} per non-empty bin (means)."""
+    start, end = np.asarray(start, float), np.asarray(end, float)
+    length = np.linalg.norm(end - start)
+    t = (end - start)/length
+    n = np.array([-t[1], t[0]])
+    rel = np.stack([particles["x"] - start[0], particles["y"] - start[1]], axis=1)
+    s, d = rel @ t, rel @ n
+    near = (np.abs(d) <= 0.5*dr + 1e-12) & (s >= -0.5*dr) & (s <= length + 0.5*dr)
+    nBins = int(np.floor(length/dr)) + 1
+    bins = np.clip(np.rint(s[near]/dr).astype(int), 0, nBins - 1)
+    count = np.bincount(bins, minlength=nBins)
+    held = count > 0
+    out = {"s": (np.arange(nBins)*dr)[held]}
+    for key in ("Ux", "Uy", "Umag", "p", "k", "epsilon", "nut"):
+        if key in particles:
+            out[key] = (np.bincount(bins, weights=particles[key][near],
+                                    minlength=nBins)[held]/count[held])
+    out["x"] = start[0] + out["s"]*t[0]
+    out["y"] = start[1] + out["s"]*t[1]
+    return out
