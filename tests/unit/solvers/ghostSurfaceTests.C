@@ -9,7 +9,9 @@ Description
     lattice the ghosts' moments (the full lattice's minus the real rows')
     are those of the rows above it, which the Poisson row and the gradient
     use: with p_v = p_a (1 - r_va.n/delta) and p_a = rho |g| delta, the
-    ghosts' gradient part equals that of the hydrostatic pressure.
+    ghosts' gradient part equals that of the hydrostatic pressure. The
+    ghosts' kernel sum (freeSurfaceCompaction's density) leaves out the
+    nodes beyond a wall's line, which gamma counts out.
 
 \*---------------------------------------------------------------------------*/
 
@@ -105,6 +107,57 @@ TEST(ghostSurface, ghostsOfATopRowParticleCarryTheHydrostaticGradient)
         // The ghosts are about half the support: n.T_g.n near -1/2
         EXPECT_LT(n & (Tg & n), -0.3);
         EXPECT_GT(n & (Tg & n), -0.7);
+    });
+}
+
+
+TEST(ghostSurface, halfPlaneSumLeavesOutTheWallSide)
+{
+    // A particle on the top row (rows j <= 0) of a lattice that ends at a
+    // wall on its left: columns i >= -k are fluid, the wall's line at
+    // dWall = (k + 1/2) dr (inward normal nw = (1, 0)). Its ghosts (j >= 1)
+    // must be those of the columns i >= -k only, and with the wall far
+    // away, all of the half lattice j >= 1
+    const scalar dr = 0.01, delta = dr/2;
+    const autoPtr<SPH::kernel> W(wendland(dr));
+    SPH::dispatch(*W, [&](const auto& K)
+    {
+        const label m = label(K.support()/dr) + 1;
+        const vector2D n(0, 1), nw(1, 0);
+        // The ghost rows j >= 1 of columns i >= iMin
+        auto rowsAbove = [&](const label iMin)
+        {
+            scalar sum = 0;
+            for (label i = max(iMin, -m); i <= m; ++i)
+            {
+                for (label j = 1; j <= m; ++j)
+                {
+                    const scalar r = dr*Foam::sqrt(scalar(i*i + j*j));
+                    if (r < K.support()) sum += dr*dr*K.W(r);
+                }
+            }
+            return sum;
+        };
+        const scalar upper = rowsAbove(-m);
+        for (label k = 0; k <= m; ++k)
+        {
+            const scalar clipped = SPH::ghostSurface::halfPlaneSum
+            (
+                K, dr, n, delta, nw, (k + 0.5)*dr
+            );
+            EXPECT_NEAR(clipped, rowsAbove(-k), 1e-12*upper) << "k " << k;
+            EXPECT_LT(clipped, upper*(1 + 1e-12)) << "k " << k;
+        }
+        EXPECT_NEAR
+        (
+            SPH::ghostSurface::halfPlaneSum(K, dr, n, delta), upper, 1e-12*upper
+        );
+        // A wall at the top row's own level on the surface's side (a film
+        // on a ceiling): no ghost is left
+        EXPECT_EQ
+        (
+            SPH::ghostSurface::halfPlaneSum(K, dr, n, delta, -n, 0.5*dr), 0
+        );
     });
 }
 

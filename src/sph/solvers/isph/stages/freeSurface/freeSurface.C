@@ -10,36 +10,6 @@
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::SPH::freeSurface::nearestSegment(const label i) const
-{
-    // The slot (in usaw's lists of i) of the segment nearest to particle
-    // i, by the distance to the segment itself (the line of a segment
-    // round a corner can pass next to a particle the segment is far from)
-    const isphWork& w = work_;
-    const label* wOff = w.usaw.offsets().cdata();
-    const label* seg = w.usaw.segments().cdata();
-    const labelPair* ends = w.usaw.segmentParticles().cdata();
-    const vector2DField& x = w.parts.positions();
-    label nearest = -1;
-    scalar least = GREAT;
-    for (label k = wOff[i]; k < wOff[i + 1]; ++k)
-    {
-        const vector2D& a = x[ends[seg[k]].first()];
-        const vector2D& b = x[ends[seg[k]].second()];
-        const vector2D ab(b - a);
-        const scalar along = ((x[i] - a) & ab)/max(magSqr(ab), VSMALL);
-        const scalar s = min(max(along, scalar(0)), scalar(1));
-        const scalar d = mag(x[i] - a - s*ab);
-        if (d < least)
-        {
-            least = d;
-            nearest = k;
-        }
-    }
-    return nearest;
-}
-
-
 Foam::label Foam::SPH::freeSurface::countSurface
 (
     isphWork& work,
@@ -87,7 +57,7 @@ Foam::vector2D Foam::SPH::freeSurface::mirroredGradOne
     const label* nbr = w.nbrs.indices().cdata();
     const vector2D* rij = w.nbrs.rij().cdata();
     const scalar* r = w.nbrs.r().cdata();
-    const label nearest = nearestSegment(i);
+    const label nearest = ghostSurface::nearestSegment(w, i);
     const bool mirror = nearest >= 0;
     const vector2D nw
     (
@@ -161,7 +131,7 @@ void Foam::SPH::freeSurface::setNormals()
         const scalar g = mag(gradOne_[i]);
         if (!surface[i] || g <= minGrad) continue;
         vector2D nI(-gradOne_[i]/g);
-        const label nearest = nearestSegment(i);
+        const label nearest = ghostSurface::nearestSegment(w, i);
         if (nearest >= 0)
         {
             const vector2D& nw = wallNormal[seg[nearest]];

@@ -124,7 +124,6 @@ void Foam::SPH::pressurePoisson::ghostRows(const Kernel& K, const scalar dt)
     const vector2D* rij = w.nbrs.rij().cdata();
     const scalar* r = w.nbrs.r().cdata();
     const scalar* gamma = w.usaw.gamma().cdata();
-    const label* wOff = w.usaw.offsets().cdata();
     const vector2DField& x = w.parts.positions();
     const scalar delta = w.surfaceDistance;
     ghostSp_ = Zero;
@@ -145,8 +144,7 @@ void Foam::SPH::pressurePoisson::ghostRows(const Kernel& K, const scalar dt)
         }
         ghostSp_[i] = -M/delta;
         source_[i] += w.rho0*((w.g & x[i]) + delta*(w.g & n))*M/delta;
-        const bool wallInReach = wOff[i + 1] > wOff[i];
-        if (w.compaction > 0 && !wallInReach)
+        if (w.compaction > 0)
         {
             source_[i] +=
                 w.compaction*w.rho0*diluted(K, i, off, nbr, r)/sqr(dt);
@@ -165,34 +163,49 @@ Foam::scalar Foam::SPH::pressurePoisson::diluted
     const scalar* r
 )
 {
-    // 1 - rho_a/rho0 - 0.02 (in [0, 0.2]) with rho_a/rho0 the kernel sum
-    // over the real neighbours, the particle and the ghost lattice beyond the
-    // surface line, over the full lattice's (1 on the top row of a
-    // lattice)
+    // 1 - rho_a/rho0 - 0.02 (in [0, 0.2]) with rho_a/rho0 the USAW density
+    // (gamma_a rho_a = sum_b m_b w_ab over the fluid and vertex particles:
+    // Ferrand et al. 2013, ref. [10] of Leroy et al. 2014) completed by the
+    // ghost lattice beyond the surface line, over the full lattice's kernel
+    // sum (1 on the top row of a lattice). By a wall gamma_a counts the
+    // wall's side out, so the ghosts beyond the nearest wall's line are
+    // left out too. (Not the mirror images of freeSurface's normals: a
+    // sheet held at minWallDistance, dr/2, lies on their mirror line and
+    // has none, so its wall side would read empty, 50 % diluted)
     const isphWork& w = work_;
     const scalar dr = 2*w.surfaceDistance;
     if (latticeSum_ == 0)
     {
         latticeSum_ = ghostSurface::halfPlaneSum(K, dr, vector2D(0, 1), -GREAT);
     }
+    const label nearest = ghostSurface::nearestSegment(w, i);
+    const vector2D nw
+    (
+        nearest >= 0
+      ? w.usaw.segmentNormals()[w.usaw.segments()[nearest]]
+      : vector2D::zero
+    );
+    const scalar dWall = nearest >= 0 ? w.usaw.distances()[nearest] : GREAT;
     scalar sum = w.V[i]*K.W(0)
       + ghostSurface::halfPlaneSum
         (
-            K, dr, w.surfaceNormal[i], w.surfaceDistance
+            K, dr, w.surfaceNormal[i], w.surfaceDistance, nw, dWall
         );
     for (label k = off[i]; k < off[i + 1]; ++k)
     {
-        if (nbr[k] == i) continue;
-        // Already closer to a neighbour than 0.7 dr: pulling on would
+        const label b = nbr[k];
+        if (b == i) continue;
+        // Already closer to a fluid neighbour than 0.7 dr: pulling on would
         // collapse a droplet too small ever to reach rho0 onto a point
         // (3 particles 0.07 dr apart at p = -1e7 Pa stopped the 2 mm
         // obstacle run at 0.134 s)
-        if (r[k] < 0.7*dr) return 0;
-        sum += w.V[nbr[k]]*K.W(r[k]);
+        if (b < w.nFluid && r[k] < 0.7*dr) return 0;
+        sum += w.V[b]*K.W(r[k]);
     }
+    const scalar rho = sum/(w.usaw.gamma()[i]*latticeSum_);
     // Below 2 % the lattice's disorder (the shifting), not dilution; at
     // most 20 %, so that the pull stays bounded
-    return min(max(1 - sum/latticeSum_ - 0.02, scalar(0)), scalar(0.2));
+    return min(max(1 - rho - 0.02, scalar(0)), scalar(0.2));
 }
 
 
