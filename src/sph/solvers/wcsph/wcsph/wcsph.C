@@ -170,7 +170,12 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     wallModel_->setUp();
     bounds_.checkStart(runTime.timeName());
 
-    if (schemes_.getOrDefault<bool>("wallBounce", true))
+    // The bounce mirrors in the walls of t = 0 (as isphFoam's check)
+    if
+    (
+        !wallModel_->movesGeometry()
+     && schemes_.getOrDefault<bool>("wallBounce", true)
+    )
     {
         crossing_.reset(new wallCrossing(*walls_, kernel_->support()));
     }
@@ -267,7 +272,9 @@ void Foam::SPH::wcsph::printSettings() const
 {
     if (!crossing_)
     {
-        Info<< "    wall crossing       not checked (wallBounce no)" << nl;
+        Info<< "    wall crossing       not checked ("
+            << (wallModel_->movesGeometry() ? "walls move" : "wallBounce no")
+            << ")" << nl;
     }
     Info<< "    time step           eq. (15), C_n = maxCo "
         << runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2)
@@ -352,7 +359,9 @@ void Foam::SPH::wcsph::write() const
             new vtkCaseWriter
             (
                 runTime_.path(), runTime_.caseName().name(),
-                vtkCaseWriter::staticWalls
+                wallModel_->movesGeometry()
+              ? vtkCaseWriter::movingWalls
+              : vtkCaseWriter::staticWalls
             )
         );
     }
@@ -361,7 +370,22 @@ void Foam::SPH::wcsph::write() const
     vtkParticleFile particleFile(parts_);
     vtk.writeParticles(particleFile, runTime_.timeIndex(), runTime_.value());
 
-    if (vtk.wallsDue())
+    if (vtk.wallsDue() && wallModel_->movesGeometry())
+    {
+        // Where the vertex particles (after the fluid) have moved them
+        const SubList<vector2D> vertices
+        (
+            parts_.positions(), walls_->points().size(), work_.nFluid
+        );
+        vtkWallFile wallFile(vertices, walls_->segments());
+        wallFile.addCellField
+        (
+            "normal", wallModel_->operatorWalls()->segmentNormals()
+        );
+        wallFile.addCellField("patch", walls_->segmentPatch());
+        vtk.writeWalls(wallFile, runTime_.timeIndex(), runTime_.value());
+    }
+    else if (vtk.wallsDue())
     {
         vtkWallFile wallFile(walls_->points(), walls_->segments());
         wallFile.addCellField("normal", walls_->segmentNormals());

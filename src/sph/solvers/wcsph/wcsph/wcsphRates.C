@@ -20,11 +20,14 @@ void Foam::SPH::wcsph::updateNeighbours()
 {
     const vector2DField& x = parts_.positions();
 
-    // Walls do not move: the fluid particles alone decide
+    // The fluid particles decide, and the wall particles when the walls
+    // move (they are moved at every stage)
+    const label nMoving =
+        wallModel_->movesGeometry() ? x.size() : work_.nFluid;
     const domain& dom = cloud_->dom();
     bool valid = listBuilt_;
     const scalar maxMove2 = sqr(0.5*skin_);
-    for (label i = 0; i < work_.nFluid && valid; ++i)
+    for (label i = 0; i < nMoving && valid; ++i)
     {
         valid =
             magSqr(dom.separation(x[i], positionsAtBuild_[i])) <= maxMove2;
@@ -39,7 +42,7 @@ void Foam::SPH::wcsph::updateNeighbours()
     {
         cloud_->updateCells();
         nbrs_.build(cloud_->cells(), x, kernel_->support() + skin_, true);
-        positionsAtBuild_ = SubList<vector2D>(x, work_.nFluid);
+        positionsAtBuild_ = SubList<vector2D>(x, nMoving);
         listBuilt_ = skin_ > 0;
         ++nListBuilds_;
     }
