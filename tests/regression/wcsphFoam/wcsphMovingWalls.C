@@ -25,6 +25,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "testCase.H"
+#include "restartCheck.H"
 #include "particles.H"
 #include "wallMesh.H"
 #include "mathematicalConstants.H"
@@ -38,6 +39,18 @@ namespace
 {
     const std::string bin = std::string(SPHFOAM_BINARY_DIR) + "/applications/";
     const std::string here = std::string(SPHFOAM_SOURCE_DIR) + "/tests/regression/wcsphFoam";
+
+    //- A fresh copy of the movingBox case, laid out by sphMesh
+    fileName movingBox(const std::string& name)
+    {
+        const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/name;
+        rmDir(dir);
+        mkDir(dir.path());
+        std::string out;
+        EXPECT_EQ(run("cp -r " + here + "/movingBox " + dir, out), 0) << out;
+        EXPECT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
+        return dir;
+    }
 }
 
 
@@ -52,13 +65,8 @@ TEST(wcsphFoamMovingWalls, shakenBoxOfWaterMovesAsOneBody)
     const scalar uTolerance = 0.2*A*omega;
     const scalar pTolerance = 0.025*rho0*mag(g)*L;
 
-    const fileName dir =
-        fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"wcsphMovingBox";
-    rmDir(dir);
-    mkDir(dir.path());
+    const fileName dir = movingBox("wcsphMovingBox");
     std::string out;
-    ASSERT_EQ(run("cp -r " + here + "/movingBox " + dir, out), 0) << out;
-    ASSERT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
     ASSERT_EQ(run(bin + "wcsphFoam -case " + dir, out), 0)
         << out.substr(out.size() > 3000 ? out.size() - 3000 : 0);
     EXPECT_NE(out.find("moving walls"), std::string::npos) << out;
@@ -138,6 +146,16 @@ TEST(wcsphFoamMovingWalls, shakenBoxOfWaterMovesAsOneBody)
         << ", pressure L2/(rho g L) " << maxL2/(rho0*mag(g)*L)
         << ", least distance inside the box/dr " << minInside/dr
         << ", vertex error " << maxVertexError << std::endl;
+}
+
+
+
+TEST(wcsphFoamMovingWalls, restartOfTheShakenBoxIsExact)
+{
+    const fileName dir = movingBox("wcsphMovingBoxRestart");
+    sphTest::setEntry(dir/"system"/"controlDict", "endTime", "0.3");
+    sphTest::setEntry(dir/"system"/"controlDict", "writeInterval", "0.1");
+    EXPECT_EQ(sphTest::expectRestartsReproduce("wcsphFoam", dir), "0.1");
 }
 
 
