@@ -131,6 +131,8 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     nListBuilds_(0),
     nListRefreshes_(0),
     nBounced_(0),
+    minWallDistance_(0),
+    nHeld_(0),
     ratesCurrent_(false),
     timeNeighbours_(0), timeInteractions_(0), timeIntegration_(0),
     nSteps_(0),
@@ -243,6 +245,30 @@ void Foam::SPH::wcsph::addStages()
                 "wallBounce", {"positions", "U"}, {"positions", "U"},
                 "particles that cross a wall in a step bounce back (a safety"
                 " net; counted in the log)", *this, &wcsph::wallBounce
+            )
+        );
+    }
+    if (wallModel_->movesGeometry())
+    {
+        // The wall bounce's place for walls that move: isphFoam's net
+        minWallDistance_ = checkedScalar
+        (
+            schemes_, "minWallDistance", kernel_->support()/8, {0, dr_},
+            "m (0: off)"
+        );
+    }
+    if (minWallDistance_ > 0)
+    {
+        stages_.add
+        (
+            new memberStage<wcsph>
+            (
+                "wallDistance", {"positions", "U"}, {"positions", "U"},
+                "fluid particles held minWallDistance "
+              + std::string(Foam::name(minWallDistance_)) + " m off the"
+                " moving walls, without velocity towards them (a safety"
+                " net, isphFoam's; counted in the log)",
+                *this, &wcsph::holdOffWalls
             )
         );
     }
@@ -427,6 +453,12 @@ void Foam::SPH::wcsph::printStep() const
         Info<< "Wall bounces since the last report: " << nBounced_ << nl;
     }
     nBounced_ = 0;
+    if (nHeld_)
+    {
+        Info<< "Particles held off the walls since the last report: "
+            << nHeld_ << nl;
+    }
+    nHeld_ = 0;
     stages_.printStep(Info);
 }
 

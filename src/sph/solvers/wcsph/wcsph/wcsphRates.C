@@ -11,6 +11,7 @@ Description
 
 #include "wcsph.H"
 #include "wcsphBodyForces.H"
+#include "usawWalls.H"
 
 #include <chrono>
 
@@ -183,6 +184,18 @@ void Foam::SPH::wcsph::wallBounce(const scalar dt)
     nBounced_ += crossing_->bounce
     (
         x0_, parts_.positions(), parts_.field<vector2D>("U"), work_.nFluid
+    );
+}
+
+
+void Foam::SPH::wcsph::holdOffWalls(const scalar dt)
+{
+    // The walls are at t^{n+1}, their segments near each particle those
+    // of the last stage's search
+    nHeld_ += wallModel_->operatorWalls()->holdOff
+    (
+        x0_, parts_.positions(), parts_.field<vector2D>("U"), work_.nFluid,
+        minWallDistance_
     );
 }
 
