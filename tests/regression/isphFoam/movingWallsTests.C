@@ -158,6 +158,65 @@ TEST_F(movingWalls, rotatingWallTurnsAboutItsOriginFromRest)
 }
 
 
+TEST_F(movingWalls, accelerationsOfATurningWallAndNoneOfASlidingOne)
+{
+    // The drum of the test above: a = domega/dt e_z x d - omega^2 d, d =
+    // x - c, by the central difference of the velocity over 1e-4 s (its
+    // error h^2/6 |d3u/dt3| about 1e-8 here; wcsphFoam's vertex pressure
+    // takes it); the sliding lid of a cavity ramped over 1 s: none (its
+    // surface does not push the fluid), though its vertices' speed grows
+    const SPH::wallMesh drum
+    (
+        makeWalls("drum { type circle; centre (0.3 0.2); radius 0.5; side outside; }")
+    );
+    const SPH::wallBoundaries turning
+    (
+        make
+        (
+            drum,
+            "drum { type movingWallVelocity; }",
+            rotation("drum", "origin (0.3 0.2 0); omega table ((0 0) (1 2) (100 2));")
+        )
+    );
+    const vector2D c(0.3, 0.2);
+    const label n = drum.points().size();
+    List<vector2D> x(n), U(n), a(n);
+    for (const scalar t : {0.5, 3.0})
+    {
+        const scalar omega = 2*min(t, 1.0), domega = t < 1 ? 2 : 0;
+        turning.vertices(t, x, U);
+        turning.accelerations(t, a);
+        forAll(x, v)
+        {
+            const vector2D d(x[v] - c);
+            const vector2D expected
+            (
+                -domega*d.y() - sqr(omega)*d.x(),
+                domega*d.x() - sqr(omega)*d.y()
+            );
+            EXPECT_NEAR(mag(a[v] - expected), 0, 1e-6) << "t = " << t;
+        }
+    }
+
+    const SPH::wallMesh cavityWalls(makeWalls(cavity));
+    const SPH::wallBoundaries sliding
+    (
+        make
+        (
+            cavityWalls,
+            "lid { type uniformFixedValue; uniformValue table ((0 (0 0 0)) (1 (1 0 0))); }"
+            " fixedWalls { type noSlip; }"
+        )
+    );
+    List<vector2D> aLid(cavityWalls.points().size(), vector2D::one);
+    sliding.accelerations(0.5, aLid);
+    forAll(aLid, v)
+    {
+        EXPECT_EQ(aLid[v], vector2D::zero) << v;
+    }
+}
+
+
 TEST_F(movingWalls, patternEntriesMoveEveryPatchTheyMatch)
 {
     const SPH::wallMesh walls

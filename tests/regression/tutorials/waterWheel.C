@@ -4,15 +4,15 @@
 Description
     The water wheel (Leroy et al. 2014 section 4.4) as a user runs it:
     Allrun -test takes isphFoam and wcsphFoam (USAW walls, the paddles
-    turned by constant/dynamicMeshDict) at dr = 5 cm to t = 0.5 s.
-    wcsphFoam's USAW walls do not move yet (it refuses movingWallVelocity
-    at start), so only isphFoam is checked: it must end (End in the log at
-    endTime); the pressure force on the bucket must be zero until
-    t = 0.2 s (its tip reaches the water at t = 0.29 s, omega ramping up
-    over 0.2 s) and above 100 N/m once it has dipped in (wallForces must
-    measure the bucket where it has turned to: on the walls of t = 0 it
-    stays dry and reads 0); and no fluid particle may be lost (the count
-    of isolatedParticles at the first and last write).
+    turned by constant/dynamicMeshDict) at dr = 5 cm to t = 0.5 s. Each
+    must end (End in the log at endTime; wcsphFoam refused
+    movingWallVelocity before its USAW walls moved); the pressure force
+    on the bucket must be zero until t = 0.2 s (its tip reaches the water
+    at t = 0.29 s, omega ramping up over 0.2 s) and above 100 N/m once it
+    has dipped in (wallForces must measure the bucket where it has turned
+    to: on the walls of t = 0 it stays dry and reads 0); and no fluid
+    particle may be lost (the count of isolatedParticles at the first and
+    last write).
 
 \*---------------------------------------------------------------------------*/
 
@@ -21,7 +21,7 @@ Description
 
 using namespace Foam;
 
-TEST(waterWheelTutorial, isphEndsAndTheBucketFeelsTheWater)
+TEST(waterWheelTutorial, bothSolversEndAndTheBucketFeelsTheWater)
 {
     const fileName dir =
         sphTest::copyTutorial("freeSurface/waterWheel", "waterWheel");
@@ -33,8 +33,7 @@ TEST(waterWheelTutorial, isphEndsAndTheBucketFeelsTheWater)
     ) << out;
 
     const auto table = sphTest::readKeyValues(dir/"comparison.dat");
-    // Add wcsphFoam here once its USAW walls move
-    for (const std::string solver : {"isphFoam"})
+    for (const std::string solver : {"isphFoam", "wcsphFoam"})
     {
         ASSERT_TRUE(table.count(solver + "_ended")) << solver << out;
         EXPECT_EQ(table.at(solver + "_ended"), "1") << solver;

@@ -3,8 +3,18 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wallBoundaries.H"
+#include "usawWalls.H"
 #include "IOdictionary.H"
 #include "Time.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+// Long beside wallMotion's velocity step (1e-6 s), whose central difference
+// of positions would leave eps |x|/(1e-6 d) in the acceleration; short
+// beside the motions' own times (a ramp over 0.2 s, a period of 1 s): the
+// difference's error h^2/6 |d3u/dt3| is below 1e-7 m/s^2 for a wheel of
+// 1 m at pi/2 rad/s
+const Foam::scalar Foam::SPH::wallBoundaries::accelerationStep = 1e-4;
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -221,6 +231,62 @@ void Foam::SPH::wallBoundaries::vertices
         {
             U[v] = Um;
         }
+    }
+}
+
+
+void Foam::SPH::wallBoundaries::accelerations
+(
+    const scalar t,
+    UList<vector2D>& a
+) const
+{
+    const label n = walls_.points().size();
+    List<vector2D> x(n), U1(n), U2(n);
+    const scalar d = accelerationStep;
+    const scalar t1 = max(t - d, scalar(0));
+    const scalar t2 = t1 + 2*d;
+    vertices(t1, x, U1);
+    vertices(t2, x, U2);
+    forAll(a, v)
+    {
+        const label m = vertexMotion_[v];
+        a[v] =
+            m >= 0 && motionGeometry_[m] >= 0
+          ? (U2[v] - U1[v])/(t2 - t1)
+          : vector2D::zero;
+    }
+}
+
+
+void Foam::SPH::wallBoundaries::moveVertexParticles
+(
+    const scalar t,
+    const label nFluid,
+    const bool setVelocity,
+    UList<vector2D>& x,
+    UList<vector2D>& U,
+    List<vector2D>& wallX,
+    List<vector2D>& wallU,
+    usawWalls& usaw
+) const
+{
+    if (!any())
+    {
+        return;
+    }
+    vertices(t, wallX, wallU);
+    forAll(wallX, v)
+    {
+        x[nFluid + v] = wallX[v];
+        if (setVelocity)
+        {
+            U[nFluid + v] = wallU[v];
+        }
+    }
+    if (movesGeometry_)
+    {
+        usaw.updateGeometry(wallX);
     }
 }
 

@@ -131,6 +131,8 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     nListBuilds_(0),
     nListRefreshes_(0),
     nBounced_(0),
+    minWallDistance_(0),
+    nHeld_(0),
     ratesCurrent_(false),
     timeNeighbours_(0), timeInteractions_(0), timeIntegration_(0),
     nSteps_(0),
@@ -170,7 +172,12 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     wallModel_->setUp();
     bounds_.checkStart(runTime.timeName());
 
-    if (schemes_.getOrDefault<bool>("wallBounce", true))
+    // The bounce mirrors in the walls of t = 0 (as isphFoam's check)
+    if
+    (
+        !wallModel_->movesGeometry()
+     && schemes_.getOrDefault<bool>("wallBounce", true)
+    )
     {
         crossing_.reset(new wallCrossing(*walls_, kernel_->support()));
     }
@@ -241,6 +248,30 @@ void Foam::SPH::wcsph::addStages()
             )
         );
     }
+    if (wallModel_->movesGeometry())
+    {
+        // The wall bounce's place for walls that move: isphFoam's net
+        minWallDistance_ = checkedScalar
+        (
+            schemes_, "minWallDistance", kernel_->support()/8, {0, dr_},
+            "m (0: off)"
+        );
+    }
+    if (minWallDistance_ > 0)
+    {
+        stages_.add
+        (
+            new memberStage<wcsph>
+            (
+                "wallDistance", {"positions", "U"}, {"positions", "U"},
+                "fluid particles held minWallDistance "
+              + std::string(Foam::name(minWallDistance_)) + " m off the"
+                " moving walls, without velocity towards them (a safety"
+                " net, isphFoam's; counted in the log)",
+                *this, &wcsph::holdOffWalls
+            )
+        );
+    }
     if (schemes_.getOrDefault<bool>("shifting", false))
     {
         stages_.add
@@ -267,7 +298,9 @@ void Foam::SPH::wcsph::printSettings() const
 {
     if (!crossing_)
     {
-        Info<< "    wall crossing       not checked (wallBounce no)" << nl;
+        Info<< "    wall crossing       not checked ("
+            << (wallModel_->movesGeometry() ? "walls move" : "wallBounce no")
+            << ")" << nl;
     }
     Info<< "    time step           eq. (15), C_n = maxCo "
         << runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2)
@@ -352,7 +385,9 @@ void Foam::SPH::wcsph::write() const
             new vtkCaseWriter
             (
                 runTime_.path(), runTime_.caseName().name(),
-                vtkCaseWriter::staticWalls
+                wallModel_->movesGeometry()
+              ? vtkCaseWriter::movingWalls
+              : vtkCaseWriter::staticWalls
             )
         );
     }
@@ -361,7 +396,22 @@ void Foam::SPH::wcsph::write() const
     vtkParticleFile particleFile(parts_);
     vtk.writeParticles(particleFile, runTime_.timeIndex(), runTime_.value());
 
-    if (vtk.wallsDue())
+    if (vtk.wallsDue() && wallModel_->movesGeometry())
+    {
+        // Where the vertex particles (after the fluid) have moved them
+        const SubList<vector2D> vertices
+        (
+            parts_.positions(), walls_->points().size(), work_.nFluid
+        );
+        vtkWallFile wallFile(vertices, walls_->segments());
+        wallFile.addCellField
+        (
+            "normal", wallModel_->operatorWalls()->segmentNormals()
+        );
+        wallFile.addCellField("patch", walls_->segmentPatch());
+        vtk.writeWalls(wallFile, runTime_.timeIndex(), runTime_.value());
+    }
+    else if (vtk.wallsDue())
     {
         vtkWallFile wallFile(walls_->points(), walls_->segments());
         wallFile.addCellField("normal", walls_->segmentNormals());
@@ -403,6 +453,12 @@ void Foam::SPH::wcsph::printStep() const
         Info<< "Wall bounces since the last report: " << nBounced_ << nl;
     }
     nBounced_ = 0;
+    if (nHeld_)
+    {
+        Info<< "Particles held off the walls since the last report: "
+            << nHeld_ << nl;
+    }
+    nHeld_ = 0;
     stages_.printStep(Info);
 }
 

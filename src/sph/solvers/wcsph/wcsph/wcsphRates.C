@@ -11,6 +11,7 @@ Description
 
 #include "wcsph.H"
 #include "wcsphBodyForces.H"
+#include "usawWalls.H"
 
 #include <chrono>
 
@@ -20,11 +21,14 @@ void Foam::SPH::wcsph::updateNeighbours()
 {
     const vector2DField& x = parts_.positions();
 
-    // Walls do not move: the fluid particles alone decide
+    // The fluid particles decide, and the wall particles when the walls
+    // move (they are moved at every stage)
+    const label nMoving =
+        wallModel_->movesGeometry() ? x.size() : work_.nFluid;
     const domain& dom = cloud_->dom();
     bool valid = listBuilt_;
     const scalar maxMove2 = sqr(0.5*skin_);
-    for (label i = 0; i < work_.nFluid && valid; ++i)
+    for (label i = 0; i < nMoving && valid; ++i)
     {
         valid =
             magSqr(dom.separation(x[i], positionsAtBuild_[i])) <= maxMove2;
@@ -39,7 +43,7 @@ void Foam::SPH::wcsph::updateNeighbours()
     {
         cloud_->updateCells();
         nbrs_.build(cloud_->cells(), x, kernel_->support() + skin_, true);
-        positionsAtBuild_ = SubList<vector2D>(x, work_.nFluid);
+        positionsAtBuild_ = SubList<vector2D>(x, nMoving);
         listBuilt_ = skin_ > 0;
         ++nListBuilds_;
     }
@@ -180,6 +184,18 @@ void Foam::SPH::wcsph::wallBounce(const scalar dt)
     nBounced_ += crossing_->bounce
     (
         x0_, parts_.positions(), parts_.field<vector2D>("U"), work_.nFluid
+    );
+}
+
+
+void Foam::SPH::wcsph::holdOffWalls(const scalar dt)
+{
+    // The walls are at t^{n+1}, their segments near each particle those
+    // of the last stage's search
+    nHeld_ += wallModel_->operatorWalls()->holdOff
+    (
+        x0_, parts_.positions(), parts_.field<vector2D>("U"), work_.nFluid,
+        minWallDistance_
     );
 }
 

@@ -13,26 +13,11 @@ void Foam::SPH::moveWalls::move
     const bool setVelocity
 )
 {
-    if (!work.motion.any())
-    {
-        return;
-    }
-    work.motion.vertices(t, work.wallX, work.wallU);
-    vector2DField& x = work.parts.positions();
-    vector2DField& U = work.parts.field<vector2D>("U");
-    const label nFluid = work.nFluid;
-    forAll(work.wallX, v)
-    {
-        x[nFluid + v] = work.wallX[v];
-        if (setVelocity)
-        {
-            U[nFluid + v] = work.wallU[v];
-        }
-    }
-    if (work.motion.movesGeometry())
-    {
-        work.usaw.updateGeometry(work.wallX);
-    }
+    work.motion.moveVertexParticles
+    (
+        t, work.nFluid, setVelocity, work.parts.positions(),
+        work.parts.field<vector2D>("U"), work.wallX, work.wallU, work.usaw
+    );
 }
 
 

@@ -37,9 +37,11 @@ namespace
         using ct = Foam::SPH::wallConditions::conditionType;
         Foam::SPH::wallConditions(runTime, walls, "U").allowOnly
         (
-            {ct::noSlip, ct::fixedValue, ct::uniformFixedValue},
-            "the usaw walls of wcsphFoam (still walls and walls sliding"
-            " along themselves)"
+            {
+                ct::noSlip, ct::fixedValue, ct::uniformFixedValue,
+                ct::movingWallVelocity
+            },
+            "the usaw walls of wcsphFoam (still, sliding and moving walls)"
         );
         return runTime;
     }
@@ -64,20 +66,14 @@ Foam::SPH::wcsphUsaw::wcsphUsaw
         checkedScalar(schemes, "backgroundPressure", 0, {0, VGREAT}, "Pa")
     ),
     wallX_(walls.points().size()),
-    wallU_(walls.points().size())
+    wallU_(walls.points().size()),
+    wallAcceleration_(walls.points().size(), vector2D::zero)
 {
     if (!(pBackground_ >= 0))
     {
         FatalIOErrorInFunction(schemes.lookup("backgroundPressure"))
             << "Entry backgroundPressure " << pBackground_ << ": expected >= 0"
             << exit(FatalIOError);
-    }
-    if (motion_.movesGeometry())
-    {
-        FatalErrorInFunction
-            << "Walls that move their geometry (constant/dynamicMeshDict) are"
-            << " not supported by the usaw walls of wcsphFoam: only still"
-            << " walls and walls sliding along themselves" << exit(FatalError);
     }
 }
 
@@ -117,7 +113,9 @@ void Foam::SPH::wcsphUsaw::setUp()
     divU_.setSize(n);
     gradP_.setSize(n);
     viscous_.setSize(n, vector2D::zero);
-    setWallVelocity(runTime_.value());
+
+    // A restart's segments where its vertex particles are
+    moveWalls(runTime_.value());
 }
 
 
@@ -136,15 +134,33 @@ void Foam::SPH::wcsphUsaw::setWallVelocity(const scalar t)
 }
 
 
+void Foam::SPH::wcsphUsaw::moveWalls(const scalar t)
+{
+    motion_.moveVertexParticles
+    (
+        t, work_.nFluid, true, work_.parts.positions(),
+        work_.parts.field<vector2D>("U"), wallX_, wallU_, *usaw_
+    );
+    if (motion_.movesGeometry())
+    {
+        motion_.accelerations(t, wallAcceleration_);
+    }
+}
+
+
 void Foam::SPH::wcsphUsaw::rates(const scalar t)
 {
     wcsphWork& w = work_;
-    setWallVelocity(t);
+    moveWalls(t);
     usaw_->update(w.parts.positions());
 
+    // The vertex pressure's hydrostatic step with g - a_w in the frame of
+    // a wall that accelerates (zero for still and sliding walls)
+    const UList<vector2D>* wallAcceleration =
+        motion_.movesGeometry() ? &wallAcceleration_ : nullptr;
     dispatch(kernel_, [&](const auto& W)
     {
-        shepardWallPressure(W, w, 0);
+        shepardWallPressure(W, w, 0, wallAcceleration);
         w.setSoundSpeeds();
         fluidRates(W);
     });
@@ -193,7 +209,14 @@ void Foam::SPH::wcsphUsaw::describe(Ostream& os, const char* indent) const
     {
         os  << "none (nu = " << w.nu << ")" << nl;
     }
-    if (motion_.any())
+    if (motion_.movesGeometry())
+    {
+        os  << indent << "moving walls       vertex particles, segments,"
+            << " gamma and grad gamma at each stage's time (t^n, t^n + dt/2"
+            << " twice, t^n + dt); vertex pressure with g - a_w:" << nl;
+        motion_.write(os, string(indent) + "    ");
+    }
+    else if (motion_.any())
     {
         os  << indent << "wall velocity      at each stage's time:" << nl;
         motion_.write(os, string(indent) + "    ");
