@@ -6,20 +6,23 @@ Description
     2014 sections 3.1, 5.1 and 5.2: the model "the same as in WCSPH with
     the present boundary conditions", after Ferrand et al. 2013) as a user
     runs it: Allrun -test -fv -wcsph runs wcsphFoam at Re* = 640, dr = 0.1
-    (190 particles, the first row at y+ = 64, c0 = 220 m/s: about 11000
-    steps) from the FV case's own 0/k, 0/epsilon, 0/nut to t = 2 s beside
-    pimpleFoam over the same 2 s (FV-t, the spin-up from the same start),
-    and compare's differences.dat holds WCSPH against FV-t. Tolerances,
-    about 1.6 times what was measured (2026-12-02), as for ISPH's
-    (turbulentChannelSph.C, whose figures are beside):
-    - u+ for y+ > 30: max 4.7 % (ISPH 5.0 %); checked to 8 %;
-    - k+, eps+, nuT+ from the third row on: max 5.0, 10.3, 2.8 % (ISPH
-      2.4, 4.6, 2.8 %); checked to 8, 16, 5 %;
-    - the particles stay on their rows: drift 0.027 dr; checked to 0.1 dr;
+    (190 particles, the first row at y+ = 64, c0 = 220 m/s: 11000 steps,
+    25 s CPU) from the FV case's own 0/k, 0/epsilon, 0/nut to t = 2 s
+    beside pimpleFoam over the same 2 s (FV-t, the spin-up from the same
+    start), and compare's differences.dat holds WCSPH against FV-t.
+    Tolerances, about 1.6 times what was measured (2026-12-02, with the
+    case's shift), as for ISPH's (turbulentChannelSph.C, its figures
+    beside):
+    - u+ for y+ > 30: max 4.8 % (ISPH 5.0 %); checked to 8 %;
+    - k+, eps+, nuT+ from the third row on: max 4.1, 4.7, 2.3 % (ISPH
+      2.4, 4.6, 2.8 %); checked to 7, 8, 5 %;
+    - the particles stay on their rows: drift 0.045 dr; checked to 0.1 dr
+      (without the shift 0.39 dr at 5 s: see the tutorial's README);
     - the log names the k-epsilon stage and the viscous term (22)-(24);
     - with boundaryMethod dummyRepulsive a RAS case is refused, naming
-      simulationType and boundaryMethod usaw; without
-      constant/turbulenceProperties the run is laminar and says so.
+      simulationType and boundaryMethod usaw, and so is one with a wall
+      that slides (as isphFoam's); without constant/turbulenceProperties
+      the run is laminar and says so, and writes no k.
 
 \*---------------------------------------------------------------------------*/
 
@@ -71,8 +74,8 @@ TEST(turbulentChannelTutorial, wcsphKEpsilonFollowsTheFvSpinUp)
     const fileName results = dir/"runs"/"test"/"results";
     const fileName diffs = results/"differences.dat";
     EXPECT_LT(maxDifference(diffs, "u+"), 0.08) << out;
-    EXPECT_LT(maxDifference(diffs, "k+"), 0.08);
-    EXPECT_LT(maxDifference(diffs, "eps+"), 0.16);
+    EXPECT_LT(maxDifference(diffs, "k+"), 0.07);
+    EXPECT_LT(maxDifference(diffs, "eps+"), 0.08);
     EXPECT_LT(maxDifference(diffs, "nuT+"), 0.05);
 
     // Re method dr n y+_1 u*_wall log_max log_mean CPU_s clock_s t files drift
@@ -124,6 +127,29 @@ TEST(turbulentChannelTutorial, wcsphRasWithDummyWallsIsRefused)
         << log.substr(0, 6000);
     EXPECT_NE(log.find("use boundaryMethod usaw"), std::string::npos);
     EXPECT_NE(log.find("turbulenceProperties"), std::string::npos);
+}
+
+
+TEST(turbulentChannelTutorial, wcsphRasWithAMovingWallIsRefused)
+{
+    const fileName dir =
+        sphTest::copyTutorial("turbulence/channel", "turbulentChannelWcsphMoving");
+    sphTest::run("rm -rf " + dir + "/runs " + dir + "/results");
+    std::string out;
+    const fileName run = wcsphRun(dir, out);
+    ASSERT_TRUE(isDir(run/"constant"/"sphMesh")) << out;
+
+    // The upper wall slides at 1 m/s (a Couette lid)
+    sphTest::run
+    (
+        "cd " + run + " && sed -i '/upperWall/,/}/{s/type .*noSlip;/type"
+        " fixedValue; value uniform (1 0 0);/}' 0/U"
+    );
+    std::string log;
+    const int rc = sphTest::runWithBashrc("cd " + run + " && wcsphFoam", log);
+    EXPECT_NE(rc, 0);
+    EXPECT_NE(log.find("RASModel kEpsilon with moving walls"), std::string::npos)
+        << log.substr(0, 6000);
 }
 
 
