@@ -158,10 +158,6 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
 
     wallModel_ = wcsphWallModel::New(runTime, schemes_, *walls_, *kernel_, work_);
     skin_ = skinByH_*kernel_->h();
-
-    // Before the particles are read: the model adds its fields
-    turbulence_ = wcsphTurbulence::New(runTime, *wallModel_, parts_);
-    fresh_ = !isFile(parts_.path()/"positions");
     initialise();
 
     cloud_.reset
