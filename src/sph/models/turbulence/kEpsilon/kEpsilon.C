@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "kEpsilon.H"
-#include "isphWork.H"
 #include "usawOperators.H"
 #include "kernelDispatch.H"
 #include "initialField.H"
@@ -117,7 +116,7 @@ void Foam::SPH::kEpsilon::updateNut()
 template<class Kernel>
 void Foam::SPH::kEpsilon::sources(const Kernel& K)
 {
-    isphWork& w = *work_;
+    const turbulenceCoupling& w = *work_;
     const scalarField& k = parts_.field<scalar>("k");
     const scalarField& eps = parts_.field<scalar>("epsilon");
     const scalarField& nut = parts_.field<scalar>("nut");
@@ -140,7 +139,7 @@ void Foam::SPH::kEpsilon::sources(const Kernel& K)
     epsilonDiffusion
     (
         K, w.nbrs, w.usaw, w.V, w.nFluid, Deps_, k, eps, noFlux_, Cmu_,
-        sigmaEps_, w.cloud.dr(), Leps_
+        sigmaEps_, w.dr, Leps_
     );
 }
 
@@ -228,17 +227,18 @@ Foam::SPH::kEpsilon::kEpsilon
 
 void Foam::SPH::kEpsilon::connect
 (
-    isphWork& work,
+    const turbulenceCoupling& work,
     const wallMesh& walls,
     bool fresh
 )
 {
-    work_ = &work;
-    if (work.motion.any())
+    turbulenceModel::connect(work, walls, fresh);
+    if (work.movingWalls)
     {
         FatalErrorInFunction
             << "RASModel kEpsilon with moving walls: the wall functions of"
-            << " isphFoam are for walls at rest" << exit(FatalError);
+            << " isphFoam and wcsphFoam are for walls at rest"
+            << exit(FatalError);
     }
     for (const word name : {"k", "epsilon", "nut"})
     {
@@ -262,16 +262,22 @@ void Foam::SPH::kEpsilon::connect
     Deps_.setSize(n, Zero);
     noFlux_.setSize(ends.size(), Zero);
 
+    // A restart keeps the nu_T it wrote: the step's viscous term takes
+    // nu_T of the k and epsilon before the last correct(), so that one
+    // of the written k and epsilon would not go on as the run that wrote
+    // them did
     if (fresh)
     {
         readInitial("k");
         readInitial("epsilon");
+        updateNut();
     }
-    updateNut();
-    work.nut = &parts_.field<scalar>("nut");
-    work.wallLaw = &wallLaw_;
-    work.shiftedScalars.append("k");
-    work.shiftedScalars.append("epsilon");
+}
+
+
+const Foam::scalarField* Foam::SPH::kEpsilon::nut() const
+{
+    return &parts_.field<scalar>("nut");
 }
 
 
@@ -294,7 +300,7 @@ void Foam::SPH::kEpsilon::correct(const scalar dt)
         vertexValues
         (
             K, work_->nbrs, work_->usaw, work_->V, work_->nFluid,
-            vertexSegments_, Cmu_, wallLaw_.kappa(), work_->cloud.dr(),
+            vertexSegments_, Cmu_, wallLaw_.kappa(), work_->dr,
             parts_.field<scalar>("k"), parts_.field<scalar>("epsilon")
         );
         updateNut();

@@ -26,7 +26,7 @@ Foam::SPH::turbulenceModel::turbulenceModel
 :
     runTime_(runTime),
     parts_(parts),
-    work_(nullptr)
+    work_()
 {}
 
 

@@ -49,8 +49,8 @@ Foam::autoPtr<Foam::SPH::turbulenceModel> Foam::SPH::turbulenceModel::New
         else if (simulationType != "laminar")
         {
             FatalIOErrorInFunction(props)
-                << "simulationType " << simulationType << ": isphFoam has"
-                << " laminar and RAS (LES is not an SPH model here)"
+                << "simulationType " << simulationType << ": the SPH solvers"
+                << " have laminar and RAS (LES is not an SPH model here)"
                 << exit(FatalIOError);
         }
     }

@@ -159,7 +159,21 @@ void Foam::SPH::isph::buildCloud()
         V[nFluid_ + v] *= share[v];
     }
     moveWalls::move(*work_, runTime_.value(), true);
-    turbulence_->connect(*work_, *walls_, fresh_);
+    connectTurbulence();
+}
+
+
+void Foam::SPH::isph::connectTurbulence()
+{
+    isphWork& w = *work_;
+    turbulence_->connect
+    (
+        {w.W, w.nbrs, w.usaw, w.V, w.nu, w.nFluid, dr_, w.motion.any()},
+        *walls_, fresh_
+    );
+    w.nut = turbulence_->nut();
+    w.wallLaw = turbulence_->wallFunction();
+    w.shiftedScalars.append(turbulence_->shiftedFields());
 }
 
 

@@ -6,6 +6,7 @@
 #include "wcsphBodyForces.H"
 #include "memberStage.H"
 #include "wcsphShifting.H"
+#include "wcsphTurbulence.H"
 #include "OStringStream.H"
 #include "fluidProperties.H"
 #include "checkedEntry.H"
@@ -125,6 +126,7 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     dr_(0),
     bodyForces_(nullptr),
     nbrs_(true),
+    fresh_(false),
     skinByH_(0.2),
     skin_(0),
     listBuilt_(false),
@@ -211,6 +213,19 @@ std::string Foam::SPH::wcsph::neighbourPolicy() const
 
 void Foam::SPH::wcsph::addStages()
 {
+    // First: the viscous term the rates describe is the model's
+    autoPtr<wcsphTurbulence> turbulence;
+    if (!turbulence_->isLaminar())
+    {
+        turbulence.reset
+        (
+            new wcsphTurbulence
+            (
+                runTime_, schemes_, *turbulence_, work_, *wallModel_,
+                *walls_, fresh_, [this]() { updateNeighbours(); }
+            )
+        );
+    }
     OStringStream rates;
     const char* indent = "        ";
     rates
@@ -291,6 +306,10 @@ void Foam::SPH::wcsph::addStages()
             "Tait eq. (4): p of the new density", *this, &wcsph::equationOfState
         )
     );
+    if (turbulence)
+    {
+        stages_.add(turbulence.release());
+    }
 }
 
 
@@ -301,6 +320,11 @@ void Foam::SPH::wcsph::printSettings() const
         Info<< "    wall crossing       not checked ("
             << (wallModel_->movesGeometry() ? "walls move" : "wallBounce no")
             << ")" << nl;
+    }
+    if (turbulence_->isLaminar())
+    {
+        Info<< "    turbulence          "
+            << turbulence_->description().c_str() << nl;
     }
     Info<< "    time step           eq. (15), C_n = maxCo "
         << runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2)
@@ -322,9 +346,10 @@ Foam::scalar Foam::SPH::wcsph::maxDeltaT() const
 
     // 004_... eq. (15), and the viscous and force limits of 000_... eq. (49)
     scalar dt = Cn*h/max(maxSoundSpeed_, maxSpeed_);
-    if (work_.nu > 0)
+    const scalar nuMax = work_.nu + turbulence_->maxNut();
+    if (nuMax > 0)
     {
-        dt = min(dt, 0.125*h*h/work_.nu);
+        dt = min(dt, 0.125*h*h/nuMax);
     }
     if (maxAccel_ > 0)
     {

@@ -4,11 +4,12 @@
 Description
     The particles of wcsphFoam at the start: the fluid of constant/sphMesh
     and the wall particles its wall model expects, with 0/U and 0/p; or a
-    restart.
+    restart. The turbulence model first, so that its fields are read back.
 
 \*---------------------------------------------------------------------------*/
 
 #include "wcsph.H"
+#include "wcsphTurbulence.H"
 #include "Time.H"
 #include "OSspecific.H"
 #include "initialField.H"
@@ -131,7 +132,11 @@ void Foam::SPH::wcsph::initialise()
     parts_.add<label>("type");
     parts_.add<label>("patch");
 
-    if (isFile(parts_.path()/"positions"))
+    // Before the particles are read: the model adds its fields (k, ...)
+    turbulence_ = wcsphTurbulence::New(runTime_, *wallModel_, parts_);
+
+    fresh_ = !isFile(parts_.path()/"positions");
+    if (!fresh_)
     {
         Info<< "Restarting from " << parts_.path() << nl;
         parts_.read();

@@ -6,69 +6,14 @@
 #include "usawOperators.H"
 #include "kernelDispatch.H"
 
-#include <cmath>
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::SPH::viscousPrediction::turbulentViscous()
+void Foam::SPH::viscousPrediction::turbulentViscous(const scalar dt)
 {
     isphWork& w = work_;
-    const scalarField& nut = *w.nut;
-    nuEff_.setSize(nut.size());
-    forAll(nut, i)
-    {
-        nuEff_[i] = w.nu + nut[i];
-    }
-    const vector2DField& U = w.parts.field<vector2D>("U");
-    dispatch(w.W, [&](const auto& K)
-    {
-        usaw::wallFunctionViscous
-        (
-            K, w.nbrs, w.usaw, w.V, nuEff_, U, w.cloud.dr(), w.nu,
-            *w.wallLaw, visc_
-        );
-    });
-}
-
-
-void Foam::SPH::viscousPrediction::moveVertexVelocities(const scalar dt)
-{
-    isphWork& w = work_;
-    const label nF = w.nFluid;
-    const label n = w.parts.size();
-    if (vertexTangent_.size() != n - nF)
-    {
-        // The wall's tangent at each vertex: its segments' normals agree
-        const List<labelPair>& ends = w.usaw.segmentParticles();
-        const List<vector2D>& normal = w.usaw.segmentNormals();
-        List<vector2D> sumN(n - nF, Zero);
-        List<vector2D> firstN(n - nF, Zero);
-        labelList turns(n - nF, Zero);
-        forAll(ends, s)
-        {
-            for (const label v : {ends[s].first() - nF, ends[s].second() - nF})
-            {
-                if (magSqr(firstN[v]) == 0) firstN[v] = normal[s];
-                if ((firstN[v] & normal[s]) < std::cos(25*M_PI/180)) turns[v] = 1;
-                sumN[v] += normal[s];
-            }
-        }
-        vertexTangent_.setSize(n - nF);
-        forAll(vertexTangent_, v)
-        {
-            const scalar m = mag(sumN[v]);
-            vertexTangent_[v] =
-                (turns[v] || m == 0)
-              ? vector2D::zero
-              : vector2D(-sumN[v].y()/m, sumN[v].x()/m);
-        }
-    }
-    vector2D* U = w.parts.field<vector2D>("U").data();
-    for (label i = nF; i < n; ++i)
-    {
-        const vector2D& t = vertexTangent_[i - nF];
-        U[i] = ((U[i] + dt*visc_[i]) & t)*t;
-    }
+    vector2DField& U = w.parts.field<vector2D>("U");
+    slip_.viscousAcceleration(coupling_, *w.nut, *w.wallLaw, U, visc_);
+    slip_.moveVertices(w.usaw, w.nFluid, visc_, dt, U);
 }
 
 
@@ -77,8 +22,7 @@ void Foam::SPH::viscousPrediction::execute(const scalar dt)
     isphWork& w = work_;
     if (w.nut)
     {
-        turbulentViscous();
-        moveVertexVelocities(dt);
+        turbulentViscous(dt);
         const vector2DField& U = w.parts.field<vector2D>("U");
         for (label i = 0; i < w.nFluid; ++i)
         {

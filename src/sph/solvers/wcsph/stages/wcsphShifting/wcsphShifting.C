@@ -77,6 +77,7 @@ Foam::SPH::wcsphShifting::wcsphShifting
     wallModel.particleMasses(mass_);
     V_.setSize(mass_.size());
     D_.setSize(work.nFluid);
+    gradF_.setSize(mass_.size());
     checkConfined(schemes, divRMax);
 }
 
@@ -176,6 +177,25 @@ void Foam::SPH::wcsphShifting::execute(const scalar dt)
             work_.parts.positions(), U, work_.parts.field<scalar>("rho")
         );
     });
+    correctScalars();
+}
+
+
+void Foam::SPH::wcsphShifting::correctScalars()
+{
+    const List<vector2D>& gradC = shift_.concentrationGradient();
+    for (const word& name : work_.shiftedScalars)
+    {
+        scalarField& f = work_.parts.field<scalar>(name);
+        dispatch(kernel_, [&](const auto& K)
+        {
+            usaw::gradMinus(K, work_.nbrs, *walls_, V_, f, gradF_);
+        });
+        for (label i = 0; i < work_.nFluid; ++i)
+        {
+            f[i] += -D_[i]*gradC[i] & gradF_[i];
+        }
+    }
 }
 
 

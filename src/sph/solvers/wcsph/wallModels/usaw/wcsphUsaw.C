@@ -167,6 +167,22 @@ void Foam::SPH::wcsphUsaw::rates(const scalar t)
 }
 
 
+void Foam::SPH::wcsphUsaw::turbulentViscous(const vector2DField& U)
+{
+    const wcsphWork& w = work_;
+    turbulentViscosity_.viscousAcceleration
+    (
+        {kernel_, w.nbrs, *usaw_, V_, w.nu, w.nFluid, w.dr, false},
+        *w.nut, *w.wallLaw, U, viscous_
+    );
+    const scalar rho0 = w.rho0;
+    for (vector2D& v : viscous_)
+    {
+        v *= rho0;
+    }
+}
+
+
 void Foam::SPH::wcsphUsaw::fluidVolumes(scalarList& V) const
 {
     const scalarField& rho = work_.parts.field<scalar>("rho");
@@ -200,7 +216,13 @@ void Foam::SPH::wcsphUsaw::describe(Ostream& os, const char* indent) const
     }
     os  << nl << indent << "momentum           -G+{p + p_b}/rho, eqs. (5), (13):"
         << " background pressure p_b " << pBackground_ << ", gravity " << w.g << nl << indent << "viscosity          ";
-    if (w.viscous)
+    if (w.nut)
+    {
+        os  << "L{mu_E, u}/rho, mu_E = rho0 (nu + nu_T), the log-law wall"
+            << " friction and the vertices' slip, eqs. (22)-(24), nu " << w.nu
+            << nl;
+    }
+    else if (w.viscous)
     {
         os  << "L{mu, u}/rho with the wall friction, eqs. (15)-(17), nu "
             << w.nu << nl;

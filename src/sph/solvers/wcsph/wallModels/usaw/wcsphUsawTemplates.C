@@ -33,7 +33,11 @@ void Foam::SPH::wcsphUsaw::fluidRates(const Kernel& W)
     // Leroy et al. 2014 eqs. (9), (5), (15)-(17)
     usaw::div(W, w.nbrs, *usaw_, V_, Uf, divU_);
     usaw::gradPlus(W, w.nbrs, *usaw_, V_, pTotal_, gradP_);
-    if (w.viscous)
+    if (w.nut)
+    {
+        turbulentViscous(Uf);
+    }
+    else if (w.viscous)
     {
         usaw::laminarViscous(W, w.nbrs, *usaw_, V_, w.rho0*w.nu, Uf, w.dr, viscous_);
     }
