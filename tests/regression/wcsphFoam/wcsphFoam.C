@@ -218,6 +218,8 @@ TEST(wcsphFoam, collapsingTimeStepStopsWithTheLastGoodStateWritten)
 
     EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 1);
     EXPECT_NE(out.find("The time step collapsed"), std::string::npos) << out;
+    EXPECT_NE(out.find("The fastest fluid particle moves at "), std::string::npos) << out;
+    EXPECT_NE(out.find("particle id "), std::string::npos) << out;
     const std::size_t at = out.find("The last good state, time ");
     ASSERT_NE(at, std::string::npos) << out;
     const std::string time = out.substr(at + 26, out.find(',', at + 26) - at - 26);

@@ -272,13 +272,28 @@ void Foam::SPH::timeLoop::step()
     }
     if (dt < minDeltaTFraction_*deltaT0_)
     {
+        // Name the fastest fluid particle: a collapse is usually one
+        // particle or a few flung far faster than the flow
+        const particles& parts = solver_.cloud().parts();
+        const vector2DField& U = parts.field<vector2D>("U");
+        label fastest = -1;
+        scalar uMax = -1;
+        for (label i = 0; i < solver_.cloud().nFluid(); ++i)
+        {
+            if (mag(U[i]) > uMax)
+            {
+                uMax = mag(U[i]);
+                fastest = i;
+            }
+        }
         fail
         (
             "The time step collapsed to " + Foam::name(dt) + " s, below "
           + Foam::name(minDeltaTFraction_) + " of the first one ("
           + Foam::name(deltaT0_) + " s): the flow is too violent for this"
-            " resolution and time-step control",
-            -1, false
+            " resolution and time-step control. The fastest fluid particle"
+            " moves at " + Foam::name(uMax) + " m/s:",
+            fastest, false
         );
     }
 
