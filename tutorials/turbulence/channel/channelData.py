@@ -11,8 +11,15 @@ import sys
 
 import numpy as np
 
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get(
+    "FOAM_SPHFOAM_TOOLS", os.path.join(here, "..", "..", "..", "bin", "tools")),
+    "python"))
+from foamCaseFiles import (nan, read_numeric_entries, strip_comments,  # noqa: E402,F401
+                           time_dirs)
+from foamCaseFiles import read_log as read_solver_log  # noqa: E402
+
 QUANTITIES = ("u", "k", "eps", "nut")
-nan = float("nan")
 
 # The DNS kept with the project (etc/reference), or SPHFOAM_REFERENCE
 dnsFile = os.environ.get(
@@ -22,55 +29,17 @@ dnsFile = os.environ.get(
         "etc", "reference", "channel_dns_retau590.csv"))
 
 
-def strip_comments(text):
-    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
-    return re.sub(r"//[^\n]*", "", text)
-
-
 def read_parameters(case):
     """The numeric 'key value;' entries of system/channelParameters."""
-    path = os.path.join(case, "system", "channelParameters")
-    text = re.sub(r"FoamFile\s*\{[^}]*\}", "", strip_comments(open(path).read()))
-    values = {}
-    for key, value in re.findall(r"^\s*(\w+)\s+([^;{}$#]+?)\s*;", text, flags=re.M):
-        try:
-            values[key] = float(value)
-        except ValueError:
-            pass
-    for key in ("e", "f", "nu", "dr", "Re"):
-        if key not in values:
-            raise RuntimeError("%s: no numeric entry '%s'" % (path, key))
-    return values
+    return read_numeric_entries(
+        os.path.join(case, "system", "channelParameters"),
+        ("e", "f", "nu", "dr", "Re"))
 
 
 def read_log(case, app):
     """(CPU s, clock s, last time) from log.<app>; NaN where missing."""
-    path = os.path.join(case, "log." + app)
-    cpu = clock = tLast = nan
-    if not os.path.isfile(path):
-        return cpu, clock, tLast
-    timing = re.compile(r"^ExecutionTime = (\S+) s\s+ClockTime = (\S+) s")
-    with open(path, errors="replace") as f:
-        for line in f:
-            m = timing.match(line)
-            if m:
-                cpu, clock = float(m.group(1)), float(m.group(2))
-            elif line.startswith("Time = "):
-                try:
-                    tLast = float(line.split()[2])
-                except (IndexError, ValueError):
-                    pass
-    return cpu, clock, tLast
-
-
-def time_dirs(path):
-    names = []
-    for name in os.listdir(path) if os.path.isdir(path) else []:
-        try:
-            names.append((float(name), name))
-        except ValueError:
-            pass
-    return [name for _, name in sorted(names)]
+    log = read_solver_log(os.path.join(case, "log." + app))
+    return log["cpu"], log["clock"], log["t"]
 
 
 def fold(y, e):

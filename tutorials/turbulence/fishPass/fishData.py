@@ -7,10 +7,18 @@ lines and pool outline of README.md.
 import json
 import os
 import re
+import sys
 
 import numpy as np
 
-nan = float("nan")
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get(
+    "FOAM_SPHFOAM_TOOLS", os.path.join(here, "..", "..", "..", "bin", "tools")),
+    "python"))
+from foamCaseFiles import (nan, read_numeric_entries, strip_comments,  # noqa: E402,F401
+                           time_dirs)
+from foamCaseFiles import read_log as read_solver_log  # noqa: E402
+
 
 # Quantities along the sections: name -> label
 QUANTITIES = (("Umag", "|U| [m/s]"), ("Ux", "Ux [m/s]"), ("Uy", "Uy [m/s]"),
@@ -29,67 +37,16 @@ SOLIDS = [[(8, 0), (9, 0), (9, 1.5), (8, 1)],                   # short baffle
           [(7, 2), (8, 2), (9, 2.5), (9, 8), (8, 8), (8, 3), (7, 3)]]  # long
 
 
-def strip_comments(text):
-    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
-    return re.sub(r"//[^\n]*", "", text)
-
-
 def read_parameters(case):
     """The numeric 'key value;' entries of system/fishParameters."""
-    path = os.path.join(case, "system", "fishParameters")
-    text = re.sub(r"FoamFile\s*\{[^}]*\}", "", strip_comments(open(path).read()))
-    values = {}
-    for key, value in re.findall(r"^\s*(\w+)\s+([^;{}$#]+?)\s*;", text, flags=re.M):
-        try:
-            values[key] = float(value)
-        except ValueError:
-            pass
-    for key in ("b", "L", "B", "dr", "nb", "rho", "tEnd"):
-        if key not in values:
-            raise RuntimeError("%s: no numeric entry '%s'" % (path, key))
-    return values
+    return read_numeric_entries(
+        os.path.join(case, "system", "fishParameters"),
+        ("b", "L", "B", "dr", "nb", "rho", "tEnd"))
 
 
 def read_log(case, app):
-    """{cpu, clock, t, steps} from log.<app>; NaN where missing."""
-    path = os.path.join(case, "log." + app)
-    out = {"cpu": nan, "clock": nan, "t": nan, "steps": 0, "end": False}
-    if not os.path.isfile(path):
-        return out
-    timing = re.compile(r"^ExecutionTime = (\S+) s\s+ClockTime = (\S+) s")
-    steps = re.compile(r"^Steps (\d+),")
-    failedAt = re.compile(r"\(time step (\d+), deltaT")
-    with open(path, errors="replace") as f:
-        for line in f:
-            m = timing.match(line)
-            if m:
-                out["cpu"], out["clock"] = float(m.group(1)), float(m.group(2))
-            elif line.startswith("Time = "):
-                out["steps"] += 1
-                try:
-                    out["t"] = float(line.split()[2])
-                except (IndexError, ValueError):
-                    pass
-            elif steps.match(line):
-                out["sphSteps"] = int(steps.match(line).group(1))
-            elif failedAt.search(line):
-                # A run stopped by a failure: the step it failed in
-                out["sphSteps"] = int(failedAt.search(line).group(1))
-            elif line.startswith("End"):
-                out["end"] = True
-    if "sphSteps" in out:
-        out["steps"] = out.pop("sphSteps")
-    return out
-
-
-def time_dirs(path):
-    names = []
-    for name in os.listdir(path) if os.path.isdir(path) else []:
-        try:
-            names.append((float(name), name))
-        except ValueError:
-            pass
-    return [name for _, name in sorted(names)]
+    """{cpu, clock, t, steps, end} from log.<app>; NaN where missing."""
+    return read_solver_log(os.path.join(case, "log." + app))
 
 
 def fv_set(case, name):
