@@ -437,6 +437,47 @@ TEST(isphFoam, restartIsExactToTheBit)
 }
 
 
+TEST(isphFoam, retryOnFailureTakesAFailedStepAgainWithHalfTheTimeStep)
+{
+    // Water thrown at 1 m/s against a wall with maxCo 1: the steps move
+    // particles 0.35 h where maxStepDisplacement allows 0.3 h
+    const fileName dir = tankCase("isphRetry", "0.05", "0.5");
+    setEntry(dir/"system"/"controlDict", "maxCo", "1");
+    setEntry(dir/"system"/"controlDict", "writeInterval", "0.1");
+    setEntry(dir/"0"/"U", "internalField", "uniform (1 0 0)");
+    std::string out;
+    run("echo 'maxStepDisplacement 0.3;' >> " + dir/"system"/"sphSchemes", out);
+    ASSERT_EQ(mesh(dir, out), 0) << out;
+    EXPECT_EQ(solve(dir, out), 1) << tail(out);
+    EXPECT_NE(out.find("more than maxStepDisplacement"), std::string::npos) << tail(out);
+
+    // With retries each failed step is taken again from its start, and the
+    // write grid of writeControl adjustable is kept
+    run("rm -rf " + dir + "/0.* " + dir + "/VTK && echo 'retryOnFailure 3;' >> "
+        + dir/"system"/"controlDict", out);
+    ASSERT_EQ(solve(dir, out), 0) << tail(out);
+    EXPECT_NE(out.find("failed (Moved"), std::string::npos) << tail(out);
+    EXPECT_NE(out.find("retried with deltaT"), std::string::npos) << tail(out);
+    const std::size_t at = out.find("Steps retried with half the time step");
+    ASSERT_NE(at, std::string::npos) << tail(out);
+    EXPECT_EQ(out.find(" 0 steps rescued", at), std::string::npos) << tail(out);
+    for (const char* t : {"0.1", "0.2", "0.3", "0.4", "0.5"})
+    {
+        EXPECT_TRUE(isDir(dir/t)) << t << " not written\n" << tail(out);
+    }
+
+    // Without an adjustable time step there is no step to halve
+    setEntry(dir/"system"/"controlDict", "adjustTimeStep", "no");
+    EXPECT_EQ(solve(dir, out), 1) << tail(out);
+    EXPECT_NE(out.find("retryOnFailure 3 needs adjustTimeStep yes"), std::string::npos)
+        << tail(out);
+    EXPECT_NE(out.find("controlDict"), std::string::npos) << tail(out);
+    setEntry(dir/"system"/"controlDict", "retryOnFailure", "-1");
+    EXPECT_EQ(solve(dir, out), 1) << tail(out);
+    EXPECT_NE(out.find("0 (off) to 20"), std::string::npos) << tail(out);
+}
+
+
 TEST(isphFoam, pressureSolveThatDoesNotConvergeStops)
 {
     const fileName dir = cavityCase("isphNotConverged", "20", "0.5");

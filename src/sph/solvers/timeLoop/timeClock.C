@@ -61,6 +61,18 @@ void startAt(Time& runTime, const instant& t)
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
+Foam::label Foam::SPH::timeClock::writeTimeIndex(const Time& runTime)
+{
+    return runTime.*clockAccess::writeTimeIndexMember();
+}
+
+
+void Foam::SPH::timeClock::setWriteTimeIndex(Time& runTime, const label index)
+{
+    runTime.*clockAccess::writeTimeIndexMember() = index;
+}
+
+
 bool Foam::SPH::timeClock::isWrittenState(const fileName& dir)
 {
     return isDir(dir/"uniform") || isDir(dir/"lagrangian");

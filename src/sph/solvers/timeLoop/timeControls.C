@@ -135,6 +135,24 @@ void Foam::SPH::checkTimeControls(const Time& runTime)
     {
         checkedScalar(dict, "maxDeltaT", {0, VGREAT, true}, "s");
     }
+    if (dict.found("retryOnFailure"))
+    {
+        const label n = dict.get<label>("retryOnFailure");
+        if (n < 0 || n > 20)
+        {
+            FatalIOErrorInFunction(dict.lookup("retryOnFailure"))
+                << "Entry retryOnFailure " << n << ": expected how many times"
+                << " a failed step is taken again with half the time step,"
+                << " 0 (off) to 20" << exit(FatalIOError);
+        }
+        if (n > 0 && !dict.getOrDefault<bool>("adjustTimeStep", false))
+        {
+            FatalIOErrorInFunction(dict.lookup("retryOnFailure"))
+                << "Entry retryOnFailure " << n << " needs adjustTimeStep yes:"
+                << " the halved step of a retry is an adjusted time step"
+                << exit(FatalIOError);
+        }
+    }
     if (dict.found("logInterval"))
     {
         const label n = dict.get<label>("logInterval");

@@ -35,7 +35,14 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     lastDeltaTStart_(-1),
     timeStart_(runTime.value()),
     purgeWrite_(timeClock::takeOverPurgeWrite(runTime)),
-    displacement_(schemes_)
+    displacement_(schemes_),
+    maxRetries_
+    (
+        runTime.controlDict().getOrDefault<label>("retryOnFailure", 0)
+    ),
+    nRetries_(0),
+    nRescued_(0),
+    writeTimeIndexStart_(0)
 {
     checkTimeControls(runTime);
     minDeltaTFraction_ = checkedScalar
@@ -223,6 +230,21 @@ Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
 }
 
 
+Foam::string Foam::SPH::timeLoop::where(const label i) const
+{
+    if (i < 0)
+    {
+        return string();
+    }
+    const particles& parts = solver_.cloud().parts();
+    const vector2D& x = parts.positions()[i];
+    return
+        " particle id " + Foam::name(parts.field<label>("id")[i])
+      + " at (" + Foam::name(x.x()) + " " + Foam::name(x.y()) + ")"
+      + (i < solver_.cloud().nFluid() ? "" : " (a wall particle)");
+}
+
+
 void Foam::SPH::timeLoop::fail
 (
     const string& what,
@@ -231,15 +253,6 @@ void Foam::SPH::timeLoop::fail
 )
 {
     const scalar tFailed = runTime_.value();
-    const particles& parts = solver_.cloud().parts();
-    string where;
-    if (i >= 0)
-    {
-        const vector2D& x = parts.positions()[i];
-        where = " particle id " + Foam::name(parts.field<label>("id")[i])
-          + " at (" + Foam::name(x.x()) + " " + Foam::name(x.y()) + ")"
-          + (i < solver_.cloud().nFluid() ? "" : " (a wall particle)");
-    }
 
     // The state at the start of the step was good: put it back and write
     // it at the time it belongs to
@@ -253,7 +266,7 @@ void Foam::SPH::timeLoop::fail
     writeTime();
 
     FatalErrorInFunction
-        << what.c_str() << where.c_str() << nl
+        << what.c_str() << where(i).c_str() << nl
         << "    at time " << tFailed << " s (time step "
         << runTime_.timeIndex() + 1 << ", deltaT " << runTime_.deltaTValue()
         << " s)" << nl
@@ -263,61 +276,103 @@ void Foam::SPH::timeLoop::fail
 }
 
 
-void Foam::SPH::timeLoop::step()
+void Foam::SPH::timeLoop::checkCollapse()
 {
     const scalar dt = runTime_.deltaTValue();
     if (deltaT0_ < 0)
     {
         deltaT0_ = dt;
     }
-    if (dt < minDeltaTFraction_*deltaT0_)
+    if (dt >= minDeltaTFraction_*deltaT0_)
     {
-        // Name the fastest fluid particle: a collapse is usually one
-        // particle or a few flung far faster than the flow
-        const particles& parts = solver_.cloud().parts();
-        const vector2DField& U = parts.field<vector2D>("U");
-        label fastest = -1;
-        scalar uMax = -1;
-        for (label i = 0; i < solver_.cloud().nFluid(); ++i)
-        {
-            if (mag(U[i]) > uMax)
-            {
-                uMax = mag(U[i]);
-                fastest = i;
-            }
-        }
-        fail
-        (
-            "The time step collapsed to " + Foam::name(dt) + " s, below "
-          + Foam::name(minDeltaTFraction_) + " of the first one ("
-          + Foam::name(deltaT0_) + " s): the flow is too violent for this"
-            " resolution and time-step control. The fastest fluid particle"
-            " moves at " + Foam::name(uMax) + " m/s:",
-            fastest, false
-        );
+        return;
     }
 
-    solver_.cloud().parts().save(start_);
-    solver_.saveState(start_);
-    lastDeltaTStart_ = lastDeltaT_;
+    // Name the fastest fluid particle: a collapse is usually one particle
+    // or a few flung far faster than the flow
+    const vector2DField& U = solver_.cloud().parts().field<vector2D>("U");
+    label fastest = -1;
+    scalar uMax = -1;
+    for (label i = 0; i < solver_.cloud().nFluid(); ++i)
+    {
+        if (mag(U[i]) > uMax)
+        {
+            uMax = mag(U[i]);
+            fastest = i;
+        }
+    }
+    fail
+    (
+        "The time step collapsed to " + Foam::name(dt) + " s, below "
+      + Foam::name(minDeltaTFraction_) + " of the first one ("
+      + Foam::name(deltaT0_) + " s): the flow is too violent for this"
+        " resolution and time-step control. The fastest fluid particle"
+        " moves at " + Foam::name(uMax) + " m/s:",
+        fastest, false
+    );
+}
 
+
+bool Foam::SPH::timeLoop::trySolve(string& what, label& bad)
+{
+    const scalar dt = runTime_.deltaTValue();
     try
     {
         solver_.solve(dt);
     }
     catch (const stageFailure& failure)
     {
-        fail(failure.what(), failure.particle(), true);
+        what = failure.what();
+        bad = failure.particle();
+        return false;
     }
     lastDeltaT_ = dt;
+    bad = findBadParticle(what);
+    return bad < 0;
+}
+
+
+void Foam::SPH::timeLoop::retryHalved(const string& what, const label bad)
+{
+    const scalar dt = runTime_.deltaTValue();
+    const scalar tFailed = runTime_.value();
+    solver_.cloud().parts().restore(start_);
+    solver_.restoreState();
+    lastDeltaT_ = lastDeltaTStart_;
+    runTime_.setTime(timeStart_, runTime_.timeIndex() - 1);
+    timeClock::setWriteTimeIndex(runTime_, writeTimeIndexStart_);
+    runTime_.setDeltaT(0.5*dt, false);
+    ++runTime_;
+    ++nRetries_;
+    Info<< "Step to t = " << tFailed << " failed (" << what.c_str()
+        << where(bad).c_str() << "): retried with deltaT = "
+        << runTime_.deltaTValue() << " (retryOnFailure)" << endl;
+}
+
+
+void Foam::SPH::timeLoop::step()
+{
+    checkCollapse();
+    solver_.cloud().parts().save(start_);
+    solver_.saveState(start_);
+    lastDeltaTStart_ = lastDeltaT_;
 
     string what;
-    const label bad = findBadParticle(what);
-    if (bad >= 0)
+    label bad = -1;
+    bool ok = trySolve(what, bad);
+    for (label retry = 0; !ok && retry < maxRetries_; ++retry)
+    {
+        // A halved step below the collapse limit would only fail there
+        if (0.5*runTime_.deltaTValue() < minDeltaTFraction_*deltaT0_) break;
+        retryHalved(what, bad);
+        ok = trySolve(what, bad);
+        nRescued_ += ok;
+    }
+    if (!ok)
     {
         fail(what, bad, true);
     }
-    solver_.afterStep(dt);
+    solver_.afterStep(runTime_.deltaTValue());
 }
 
 
@@ -359,7 +414,13 @@ void Foam::SPH::timeLoop::run()
         << ", " << displacement_.describe().c_str()
         << (solver_.physicalChecks().empty() ? "" : ", ")
         << solver_.physicalChecks().c_str()
-        << ", deltaT below " << minDeltaTFraction_ << " of the first; the"
+        << ", deltaT below " << minDeltaTFraction_ << " of the first; "
+        << (
+               maxRetries_ > 0
+             ? "a failed step is taken again with half the time step up to "
+             + Foam::name(maxRetries_) + " times, then the"
+             : string("the")
+           ).c_str()
         << " last good state is written" << nl << endl;
 
     const bool adjustTimeStep =
@@ -381,6 +442,7 @@ void Foam::SPH::timeLoop::run()
             runTime_.setDeltaT(nextDeltaT());
         }
         timeStart_ = runTime_.value();
+        writeTimeIndexStart_ = timeClock::writeTimeIndex(runTime_);
         ++runTime_;
 
         const bool log =
@@ -408,6 +470,12 @@ void Foam::SPH::timeLoop::run()
     }
 
     displacement_.printSummary(Info);
+    if (maxRetries_ > 0)
+    {
+        Info<< "Steps retried with half the time step (retryOnFailure "
+            << maxRetries_ << "): " << nRetries_ << " retries, " << nRescued_
+            << " steps rescued" << nl;
+    }
     solver_.printTimes();
     Info<< "End" << nl << endl;
 }
