@@ -351,6 +351,59 @@ void Foam::SPH::pressurePoisson::setPressure()
 }
 
 
+Foam::label Foam::SPH::pressurePoisson::holdAtPMin()
+{
+    isphWork& w = work_;
+    const scalarField& p = w.parts.field<scalar>("p");
+    const vector2DField& x = w.parts.positions();
+    labelList& kind = laplacian_.kinds();
+    scalarList& f = laplacian_.dirichletValues();
+    label n = 0;
+    for (label i = 0; i < w.nFluid; ++i)
+    {
+        if (kind[i] == laplacianMatrix::interior && p[i] < pMin_)
+        {
+            // A = s f with s = -rho: p = pMin
+            kind[i] = laplacianMatrix::dirichlet;
+            f[i] = (w.g & x[i]) - pMin_/w.rho0;
+            ++n;
+        }
+    }
+    return n;
+}
+
+
+void Foam::SPH::pressurePoisson::solve()
+{
+    // Warm start from the last pressure
+    isphWork& w = work_;
+    const label n = w.parts.size();
+    const scalarField& p = w.parts.field<scalar>("p");
+    const vector2DField& x = w.parts.positions();
+    xA_.resize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        xA_[i] = p[i] - w.rho0*(w.g & x[i]);
+    }
+
+    lastSolve_ = solver_->solve(laplacian_.matrix(), laplacian_.source(), xA_);
+    nIterations_ += lastSolve_.nIterations();
+    setPressure();
+
+    if (!lastSolve_.converged() && stopIfNotConverged_)
+    {
+        throw stageFailure
+        (
+            "The pressure solve did not converge: residual "
+          + Foam::name(lastSolve_.finalResidual()) + " after "
+          + Foam::name(lastSolve_.nIterations()) + " iterations, tolerance "
+          + Foam::name(solver_->tolerance()) + " (system/sphSolution"
+            " solvers.p; ISPH { stopIfNotConverged no; } accepts it)"
+        );
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::SPH::pressurePoisson::pressurePoisson
@@ -381,7 +434,9 @@ Foam::SPH::pressurePoisson::pressurePoisson
     nIterations_(0),
     nFloating_(0),
     latticeSum_(0),
-    ghostSp_(work.ghostSurface ? work.parts.size() : 0, Zero)
+    ghostSp_(work.ghostSurface ? work.parts.size() : 0, Zero),
+    pMin_(-VGREAT),
+    nAtPMin_(0)
 {
     if (work.ghostSurface)
     {
@@ -404,6 +459,22 @@ Foam::SPH::pressurePoisson::pressurePoisson
     (
         controls, "pRefValue", pRefValue_, {-VGREAT, VGREAT}, "Pa"
     );
+    if (controls.found("pMin"))
+    {
+        if (!freeSurface_)
+        {
+            FatalIOErrorInFunction(controls.lookup("pMin"))
+                << "Entry pMin: a confined flow's pressure level is"
+                << " arbitrary (pRefValue), so a least pressure means"
+                << " nothing; pMin is for flows with a free surface"
+                << exit(FatalIOError);
+        }
+        pMin_ = checkedScalar
+        (
+            controls, "pMin", {-VGREAT, VGREAT},
+            "the least pressure the liquid holds [Pa]"
+        );
+    }
 
     if (ownGradient_)
     {
@@ -435,6 +506,12 @@ void Foam::SPH::pressurePoisson::describe(Ostream& os) const
             << " diagonal x (1 + " << diagonalReinforcement_
             << "), mean fluid p = " << pRefValue_;
     }
+    if (pMin_ > -VGREAT)
+    {
+        os  << nl << indent.c_str() << "the liquid holds no pressure below"
+            << " pMin " << pMin_ << " Pa (it separates from a wall"
+            << " instead of pulling on it)";
+    }
     os  << nl << indent.c_str()
         << (
                stopIfNotConverged_
@@ -464,30 +541,19 @@ void Foam::SPH::pressurePoisson::execute(const scalar dt)
         makeCompatible();
     }
 
-    // Warm start from the last pressure
-    const label n = w.parts.size();
-    const scalarField& p = w.parts.field<scalar>("p");
-    const vector2DField& x = w.parts.positions();
-    xA_.resize(n);
-    for (label i = 0; i < n; ++i)
-    {
-        xA_[i] = p[i] - w.rho0*(w.g & x[i]);
-    }
+    solve();
 
-    lastSolve_ = solver_->solve(laplacian_.matrix(), laplacian_.source(), xA_);
-    nIterations_ += lastSolve_.nIterations();
-    setPressure();
-
-    if (!lastSolve_.converged() && stopIfNotConverged_)
+    // The liquid separates rather than pull below pMin: the rows solved
+    // below it are held there and the system solved again (a few passes:
+    // each can pull others below)
+    nAtPMin_ = 0;
+    for (label pass = 0; pass < 4 && pMin_ > -VGREAT; ++pass)
     {
-        throw stageFailure
-        (
-            "The pressure solve did not converge: residual "
-          + Foam::name(lastSolve_.finalResidual()) + " after "
-          + Foam::name(lastSolve_.nIterations()) + " iterations, tolerance "
-          + Foam::name(solver_->tolerance()) + " (system/sphSolution"
-            " solvers.p; ISPH { stopIfNotConverged no; } accepts it)"
-        );
+        const label nNew = holdAtPMin();
+        if (!nNew) break;
+        nAtPMin_ += nNew;
+        dispatch(w.W, [&](const auto& K) { laplacian_.assemble(K, source_); });
+        solve();
     }
 }
 
