@@ -97,6 +97,18 @@ def wall_gradient(Tw, T1, T2, h):
     return (9 * T1 - T2 - 8 * Tw) / (3 * h)
 
 
+def check_balance(case, nuIn, nuOut, tolerance=1e-3):
+    """Warn when the heat flowing in and out through the isothermal walls
+    (mean Nu from OpenFOAM's snGrad, the fluxes the solver conserves)
+    differ by more than tolerance: the run is then not at steady state,
+    whatever its residuals said."""
+    imbalance = abs(nuIn - nuOut) / max(abs(nuIn), abs(nuOut))
+    if imbalance > tolerance:
+        print("Warning: %s is not at steady state: the walls' heat fluxes differ by "
+              "%.2g (Nu %.4f against %.4f)" % (case, imbalance, nuIn, nuOut))
+    return imbalance
+
+
 def execution_time(log):
     """The last ExecutionTime (CPU s) of an OpenFOAM log, or nan."""
     value = float("nan")
