@@ -1,0 +1,217 @@
+"""Readers shared by the compare scripts of tutorials/heatTransfer/*.
+
+FV side: the cell values of an OpenFOAM field in an ascii time folder, on
+the uniform blockMesh grids of these cases (cells numbered x fastest, then
+y), the parameters file of a case, the CPU time of a log (ExecutionTime).
+
+SPH side: the particles of the latest (or a given) time of a case's VTK
+series (VTK/<name>.vtp.series and <name>_<index>.vtp, point data T, U,
+p_rgh, as sphFoam writes them), and their Shepard-weighted average on
+points, the way one samples a particle field on a line.
+"""
+import json
+import math
+import os
+import re
+
+import numpy as np
+
+
+def time_dirs(case):
+    """Time folders of a case, sorted by value, without 0."""
+    times = []
+    for name in os.listdir(case):
+        try:
+            value = float(name)
+        except ValueError:
+            continue
+        if value > 0 and os.path.isdir(os.path.join(case, name)):
+            times.append((value, name))
+    return [name for _, name in sorted(times)]
+
+
+def latest_time(case):
+    """The latest time folder of a case (not 0), or None."""
+    times = time_dirs(case) if os.path.isdir(case) else []
+    return times[-1] if times else None
+
+
+def read_parameters(path):
+    """The 'key value;' lines of a parameters dictionary as floats where
+    they are numbers (entries computed by #eval are left out)."""
+    values = {}
+    with open(path) as f:
+        for line in f:
+            m = re.match(r"^(\w+)\s+([-+0-9.eE]+)\s*;", line)
+            if m:
+                values[m.group(1)] = float(m.group(2))
+    return values
+
+
+def read_field(case, time, name):
+    """Cell values of an ascii volScalarField (n,) or volVectorField (n, 3);
+    a uniform internalField is returned as one value."""
+    path = os.path.join(case, time, name)
+    with open(path) as f:
+        text = f.read()
+    m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
+    if m:
+        return np.array(m.group(1).strip("() ").split(), dtype=float)
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
+    if not m:
+        raise ValueError("%s: no ascii internalField (writeFormat ascii?)" % path)
+    count = int(m.group(2))
+    body = text[m.end():]
+    if m.group(1) == "scalar":
+        values = np.array(body.split(None, count)[:count], dtype=float)
+        return values
+    numbers = re.findall(r"\(([^()]*)\)", body[:count * 80 + 100])[:count]
+    return np.array([v.split() for v in numbers], dtype=float)
+
+
+def grid_field(values, nx, ny):
+    """Cell values of a uniform blockMesh grid as array[j, i] (y, x)."""
+    if len(values) != nx * ny:
+        raise ValueError("%d cells, expected %d x %d" % (len(values), nx, ny))
+    return values.reshape((ny, nx) + values.shape[1:])
+
+
+def peak(s, f):
+    """Maximum of a sampled profile, refined by the parabola through the
+    largest sample and its neighbours: (value, position)."""
+    k = int(np.argmax(f))
+    if 0 < k < len(f) - 1:
+        h = s[k + 1] - s[k]
+        a = 0.5 * (f[k + 1] - 2 * f[k] + f[k - 1])
+        b = 0.5 * (f[k + 1] - f[k - 1])
+        if a < 0:
+            d = -b / (2 * a)
+            return f[k] + b * d + a * d * d, s[k] + d * h
+    return f[k], s[k]
+
+
+def wall_gradient(Tw, T1, T2, h):
+    """dT/dn into the fluid at a wall from its value Tw and the cells at
+    h/2 and 3h/2 from it: the one-sided second-order difference
+    (9 T1 - T2 - 8 Tw)/(3 h) of the parabola through the three values."""
+    return (9 * T1 - T2 - 8 * Tw) / (3 * h)
+
+
+def check_balance(case, nuIn, nuOut, tolerance=1e-3):
+    """Warn when the heat flowing in and out through the isothermal walls
+    (mean Nu from OpenFOAM's snGrad, the fluxes the solver conserves)
+    differ by more than tolerance: the run is then not at steady state,
+    whatever its residuals said."""
+    imbalance = abs(nuIn - nuOut) / max(abs(nuIn), abs(nuOut))
+    if imbalance > tolerance:
+        print("Warning: %s is not at steady state: the walls' heat fluxes differ by "
+              "%.2g (Nu %.4f against %.4f)" % (case, imbalance, nuIn, nuOut))
+    return imbalance
+
+
+def execution_time(log):
+    """The last ExecutionTime (CPU s) of an OpenFOAM log, or nan."""
+    value = float("nan")
+    if not os.path.isfile(log):
+        return value
+    with open(log) as f:
+        for line in f:
+            if line.startswith("ExecutionTime"):
+                value = float(line.split()[2])
+    return value
+
+
+def iterations(log):
+    """The number of 'Time =' lines of an OpenFOAM log."""
+    if not os.path.isfile(log):
+        return 0
+    with open(log) as f:
+        return sum(1 for line in f if line.startswith("Time ="))
+
+
+def sph_series(case):
+    """(name, [(time, file)]) of the particle series in case/VTK: the
+    .vtp.series that is neither the walls nor sphMesh's, or None."""
+    folder = os.path.join(case, "VTK")
+    if not os.path.isdir(folder):
+        return None
+    for name in sorted(os.listdir(folder)):
+        if not name.endswith(".vtp.series"):
+            continue
+        stem = name[:-len(".vtp.series")]
+        if stem.endswith("_walls") or stem.startswith("sphMesh"):
+            continue
+        with open(os.path.join(folder, name)) as f:
+            series = json.load(f)
+        files = [(float(e["time"]), os.path.join(folder, e["name"]))
+                 for e in series["files"]]
+        return stem, sorted(files)
+    return None
+
+
+def read_particles(path, fields=("T", "U")):
+    """Points (n, 3) and {field: values} of a particle .vtp file; fields
+    missing from the file are left out. Only fluid particles when the file
+    has a 'type' array (0 = fluid)."""
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    points = vtk_to_numpy(data.GetPoints().GetData())
+    point_data = data.GetPointData()
+    values = {}
+    for name in fields + ("type",):
+        array = point_data.GetArray(name)
+        if array is not None:
+            values[name] = vtk_to_numpy(array)
+    if "type" in values:
+        fluid = values.pop("type") == 0
+        points = points[fluid]
+        values = {k: v[fluid] for k, v in values.items()}
+    return points, values
+
+
+def sph_at_time(case, time=None):
+    """Particles of an SPH case at the latest time (or the nearest to
+    time): (time, points, values), or None when there is no series."""
+    found = sph_series(case)
+    if not found or not found[1]:
+        return None
+    files = found[1]
+    if time is None:
+        t, path = files[-1]
+    else:
+        t, path = min(files, key=lambda e: abs(e[0] - time))
+    points, values = read_particles(path, ("T", "U", "p_rgh"))
+    return t, points, values
+
+
+def shepard(points, values, samples, radius):
+    """Shepard average (Wendland C2 weights, support radius) of particle
+    values at sample points (m, 2); nan where no particle is near. The
+    particles are binned in squares of side radius (numpy only)."""
+    xy = points[:, :2]
+    origin = xy.min(axis=0)
+    keys = np.floor((xy - origin) / radius).astype(int)
+    bins = {}
+    for index, key in enumerate(map(tuple, keys)):
+        bins.setdefault(key, []).append(index)
+    out = np.full((len(samples),) + values.shape[1:], np.nan)
+    for k, sample in enumerate(np.asarray(samples, dtype=float)):
+        ci, cj = np.floor((sample - origin) / radius).astype(int)
+        near = [i for di in (-1, 0, 1) for dj in (-1, 0, 1)
+                for i in bins.get((ci + di, cj + dj), ())]
+        if not near:
+            continue
+        q = np.linalg.norm(xy[near] - sample, axis=1) / radius
+        w = np.where(q < 1, (1 - q) ** 4 * (1 + 4 * q), 0.0)
+        if w.sum() > 0:
+            out[k] = np.tensordot(w, values[near], axes=1) / w.sum()
+    return out
+
+
+def spacing(points, area):
+    """Mean particle spacing of particles filling an area."""
+    return math.sqrt(area / max(len(points), 1))
