@@ -266,13 +266,28 @@ void Foam::SPH::heatTransfer::correct(const scalar dt)
 void Foam::SPH::heatTransfer::addBuoyancy
 (
     const scalar dt,
-    UList<vector2D>& Ustar
-) const
+    UList<vector2D>& Ustar,
+    const bool vertices,
+    List<vector2D>& wallForce
+)
 {
-    const scalarField& T = parts_.field<scalar>("T");
-    for (label i = 0; i < work_->nFluid; ++i)
+    const turbulenceCoupling& w = *work_;
+    scalarField& T = parts_.field<scalar>("T");
+    dispatch(w.W, [&](const auto& K)
+    {
+        vertexValues(K, w.nbrs, w.usaw, w.V, w.nFluid, walls_, T);
+    });
+    const label n = vertices ? T.size() : w.nFluid;
+    for (label i = 0; i < n; ++i)
     {
         Ustar[i] += dt*buoyancy(g_, props_.beta, T[i], props_.TRef);
+    }
+    const List<labelPair>& ends = w.usaw.segmentParticles();
+    wallForce.setSize(ends.size());
+    forAll(ends, s)
+    {
+        const scalar Ts = 0.5*(T[ends[s].first()] + T[ends[s].second()]);
+        wallForce[s] = buoyancy(g_, props_.beta, Ts, props_.TRef);
     }
 }
 

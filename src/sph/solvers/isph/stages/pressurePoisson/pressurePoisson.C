@@ -212,27 +212,40 @@ Foam::scalar Foam::SPH::pressurePoisson::diluted
 void Foam::SPH::pressurePoisson::wallCondition(const scalar dt)
 {
     // Eq. (43) with the vertex particles' u* = u_w^n + dt g (45): zero at
-    // a wall that does not accelerate
-    if (!work_.motion.any())
+    // a wall that does not accelerate, plus rho f_s.n_s of a body force
+    // of u** at the wall (isphWork::wallAcceleration: buoyancy)
+    const bool forced = !work_.wallAcceleration.empty();
+    if (!work_.motion.any() && !forced)
     {
         return;
     }
     const label nFluid = work_.nFluid;
-    work_.motion.vertices(runTime_.value(), work_.wallX, work_.wallU);
-    const vector2DField& U = work_.parts.field<vector2D>("U");
-    const List<labelPair>& ends = work_.usaw.segmentParticles();
     const List<vector2D>& normal = work_.usaw.segmentNormals();
     scalarList& dAdn = laplacian_.wallFlux();
-    forAll(dAdn, s)
+    dAdn = Zero;
+    if (work_.motion.any())
     {
-        const label v1 = ends[s].first();
-        const label v2 = ends[s].second();
-        const vector2D uOld(0.5*(U[v1] + U[v2]));
-        const vector2D uNew
-        (
-            0.5*(work_.wallU[v1 - nFluid] + work_.wallU[v2 - nFluid])
-        );
-        dAdn[s] = work_.rho0*((uOld - uNew) & normal[s])/dt;
+        work_.motion.vertices(runTime_.value(), work_.wallX, work_.wallU);
+        const vector2DField& U = work_.parts.field<vector2D>("U");
+        const List<labelPair>& ends = work_.usaw.segmentParticles();
+        forAll(dAdn, s)
+        {
+            const label v1 = ends[s].first();
+            const label v2 = ends[s].second();
+            const vector2D uOld(0.5*(U[v1] + U[v2]));
+            const vector2D uNew
+            (
+                0.5*(work_.wallU[v1 - nFluid] + work_.wallU[v2 - nFluid])
+            );
+            dAdn[s] = work_.rho0*((uOld - uNew) & normal[s])/dt;
+        }
+    }
+    if (forced)
+    {
+        forAll(dAdn, s)
+        {
+            dAdn[s] += work_.rho0*(work_.wallAcceleration[s] & normal[s]);
+        }
     }
 }
 
