@@ -206,7 +206,7 @@ Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
         << props_.TRef << ", Pr " << props_.Pr << ", Prt " << props_.Prt
         << ", K = nu/Pr " << props_.K << ", hRef " << hRef.value() << nl;
     parts_.add<scalar>("T");
-    parts_.add<scalar>("p_rgh", Zero, false);
+    parts_.add<scalar>("p_rgh");
 }
 
 
