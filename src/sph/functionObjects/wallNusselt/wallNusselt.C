@@ -60,6 +60,7 @@ void Foam::SPH::functionObjects::wallNusselt::gradT(List<vector2D>& result)
 void Foam::SPH::functionObjects::wallNusselt::writeLocal() const
 {
     const wallMesh& walls = cloud().walls();
+    const domain& dom = cloud().dom();
     const fileName dir
     (
         outputDir().path()/time_.timeName()
@@ -75,9 +76,11 @@ void Foam::SPH::functionObjects::wallNusselt::writeLocal() const
         {
             if (walls.segmentPatch()[s] != p) continue;
             const labelPair& e = walls.segments()[s];
+            // Minimum image: a segment may cross a periodic seam
+            const vector2D& x1 = walls.points()[e.first()];
             const vector2D mid
             (
-                0.5*(walls.points()[e.first()] + walls.points()[e.second()])
+                dom.wrap(x1 + 0.5*dom.separation(walls.points()[e.second()], x1))
             );
             os  << mid.x() << ' ' << mid.y() << ' ' << Nu_[s] << nl;
         }
@@ -108,7 +111,10 @@ void Foam::SPH::functionObjects::wallNusselt::measure()
         const vector2D Gs(0.5*(G[nFluid + e.first()] + G[nFluid + e.second()]));
         Nu_[s] = L_/DeltaT_*mag(Gs & walls.segmentNormals()[s]);
         const label p = walls.segmentPatch()[s];
-        const scalar len = mag(walls.points()[e.second()] - walls.points()[e.first()]);
+        const scalar len = mag
+        (
+            c.dom().separation(walls.points()[e.second()], walls.points()[e.first()])
+        );
         min_[p] = Foam::min(min_[p], Nu_[s]);
         max_[p] = Foam::max(max_[p], Nu_[s]);
         integral_[p] += Nu_[s]*len;
