@@ -46,7 +46,7 @@ Foam::scalar Foam::SPH::thermalProperties::readDimensioned
     }
     if (i >= is.size() || !is[i].isNumber())
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(is)
             << "Entry " << key << " (" << meaning.c_str() << ") of "
             << dict.name() << " is not a number: found '"
             << (is.size() ? is[0] : token()) << "'" << nl
