@@ -352,11 +352,8 @@ Foam::scalar Foam::SPH::isph::maxDeltaT() const
     {
         dt = min(dt, Cvisc_*h*h/nu);
     }
-    if (thermal_)
-    {
-        // The explicit heat equation, C_visq h^2/K_E
-        dt = min(dt, thermal_->maxDeltaT(h));
-    }
+    // The explicit heat equation, C_visq h^2/K_E
+    if (thermal_) dt = min(dt, thermal_->maxDeltaT(h));
     const scalar accel =
         (freeSurface_ || maxAccel_ == 0) ? max(maxAccel_, mag(g)) : maxAccel_;
     if (accel > 0)

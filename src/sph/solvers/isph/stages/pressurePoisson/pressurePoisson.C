@@ -214,11 +214,7 @@ void Foam::SPH::pressurePoisson::wallCondition(const scalar dt)
     // Eq. (43) with the vertex particles' u* = u_w^n + dt g (45): zero at
     // a wall that does not accelerate, plus rho f_s.n_s of a body force
     // of u** at the wall (isphWork::wallAcceleration: buoyancy)
-    const bool forced = !work_.wallAcceleration.empty();
-    if (!work_.motion.any() && !forced)
-    {
-        return;
-    }
+    if (!work_.motion.any() && work_.wallAcceleration.empty()) return;
     const label nFluid = work_.nFluid;
     const List<vector2D>& normal = work_.usaw.segmentNormals();
     scalarList& dAdn = laplacian_.wallFlux();
@@ -234,18 +230,13 @@ void Foam::SPH::pressurePoisson::wallCondition(const scalar dt)
             const label v2 = ends[s].second();
             const vector2D uOld(0.5*(U[v1] + U[v2]));
             const vector2D uNew
-            (
-                0.5*(work_.wallU[v1 - nFluid] + work_.wallU[v2 - nFluid])
-            );
+                (0.5*(work_.wallU[v1 - nFluid] + work_.wallU[v2 - nFluid]));
             dAdn[s] = work_.rho0*((uOld - uNew) & normal[s])/dt;
         }
     }
-    if (forced)
+    forAll(work_.wallAcceleration, s)
     {
-        forAll(dAdn, s)
-        {
-            dAdn[s] += work_.rho0*(work_.wallAcceleration[s] & normal[s]);
-        }
+        dAdn[s] += work_.rho0*(work_.wallAcceleration[s] & normal[s]);
     }
 }
 
