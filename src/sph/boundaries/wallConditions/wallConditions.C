@@ -20,6 +20,7 @@ Foam::SPH::wallConditions::conditionTypeNames
     { conditionType::movingWallVelocity, "movingWallVelocity" },
     { conditionType::zeroGradient, "zeroGradient" },
     { conditionType::fixedFluxPressure, "fixedFluxPressure" },
+    { conditionType::fixedGradient, "fixedGradient" },
     { conditionType::kqRWallFunction, "kqRWallFunction" },
     { conditionType::epsilonWallFunction, "epsilonWallFunction" },
     { conditionType::nutkWallFunction, "nutkWallFunction" },
@@ -52,72 +53,6 @@ namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::List<Foam::Pair<Foam::word>>
-Foam::SPH::wallConditions::validTypes() const
-{
-    if (fieldName_ == "U")
-    {
-        return
-        {
-            {"noSlip", "a still wall"},
-            {"slip", "a still wall without friction"},
-            {"fixedValue", "a wall sliding along itself at 'value uniform (Ux Uy 0)'"},
-            {
-                "uniformFixedValue",
-                "a wall sliding along itself at 'uniformValue', a Function1 of"
-                " time (table, constant, sine, ...)"
-            },
-            {
-                "movingWallVelocity",
-                "the velocity of the wall's motion in constant/dynamicMeshDict"
-                " (rotatingMotion, linearMotion, ...: a rotating or translating"
-                " wall)"
-            },
-        };
-    }
-    if (fieldName_ == "p" || fieldName_ == "p_rgh")
-    {
-        return
-        {
-            {"zeroGradient", "the Neumann wall condition of USAW (eq. (43))"},
-            {"fixedFluxPressure", "the same Neumann wall condition (eq. (43))"},
-        };
-    }
-    if (fieldName_ == "k")
-    {
-        return
-        {{
-            "kqRWallFunction",
-            "no flux through the wall, the wall particles' k from the fluid's"
-            " (Leroy et al. 2014, eqs. (25)-(26))"
-        }};
-    }
-    if (fieldName_ == "epsilon")
-    {
-        return
-        {{
-            "epsilonWallFunction",
-            "the log-layer wall flux and wall value (Leroy et al. 2014,"
-            " eqs. (27)-(29))"
-        }};
-    }
-    if (fieldName_ == "nut")
-    {
-        return
-        {{
-            "nutkWallFunction",
-            "the log-law wall friction on the velocity (Leroy et al. 2014,"
-            " eqs. (22)-(23))"
-        }};
-    }
-    FatalErrorInFunction
-        << "No wall conditions for the field " << fieldName_
-        << ": sphFoam reads those of U, p, k, epsilon and nut"
-        << exit(FatalError);
-    return {};
-}
-
 
 void Foam::SPH::wallConditions::readEntry(const entry& e)
 {
@@ -164,7 +99,8 @@ void Foam::SPH::wallConditions::readEntry(const entry& e)
     const conditionType type = conditionTypeNames[name];
     types_.append(type);
 
-    if (type == conditionType::fixedValue)
+    // The temperature's values are SPH::heatTransfer's to read
+    if (type == conditionType::fixedValue && fieldName_ == "U")
     {
         if (!d.found("value"))
         {
@@ -503,7 +439,10 @@ Foam::string Foam::SPH::wallConditions::describe(const label patchi) const
             break;
         case conditionType::zeroGradient:
         case conditionType::fixedFluxPressure:
-            os  << "Neumann wall condition (eq. (43))";
+            os  << (fieldName_ == "T" ? "adiabatic" : "Neumann wall condition (eq. (43))");
+            break;
+        case conditionType::fixedGradient:
+            os  << "imposed gradient (heat flux)";
             break;
         case conditionType::kqRWallFunction:
             os  << "no flux, wall value from the fluid (eqs. (25)-(26))";

@@ -18,6 +18,7 @@
 #include "shifting.H"
 #include "wallDistance.H"
 #include "bodyForces.H"
+#include "buoyancy.H"
 #include "usawWallModel.H"
 #include "checkedEntry.H"
 #include "timeControls.H"
@@ -117,15 +118,20 @@ void Foam::SPH::isph::addPrediction(const bool renormalised)
         // the implicit step (implicitViscousPrediction.H)
         if (renormalised) stages_.add(new renormalisation(w));
         if (forces) stages_.add(new bodyForces(w, forces_, true));
+        if (thermal_) stages_.add(new buoyancy(w, *thermal_, !forces));
         stages_.add
         (
-            new implicitViscousPrediction(w, solution_, forces, renormalised)
+            new implicitViscousPrediction
+            (
+                w, solution_, forces || thermal_.valid(), renormalised
+            )
         );
     }
     else
     {
         stages_.add(new viscousPrediction(w));
         if (forces) stages_.add(new bodyForces(w, forces_));
+        if (thermal_) stages_.add(new buoyancy(w, *thermal_, false));
         if (renormalised) stages_.add(new renormalisation(w));
     }
 }
@@ -206,6 +212,7 @@ void Foam::SPH::isph::addStages()
         new pressurePoisson(w, runTime_, solution_, renormalised, freeSurface_)
     );
     stages_.add(new projection(w, renormalised));
+    if (thermal_) addHeatTransfer();
     stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (34)"));
     if (moving) stages_.add(new moveWalls(w, runTime_, true));
     if (shift)
@@ -217,6 +224,7 @@ void Foam::SPH::isph::addStages()
     {
         wallDistance_ = &stages_.add(new wallDistance(w, minWallDistance));
     }
+    if (thermal_) addDynamicPressure();
 }
 
 
@@ -344,6 +352,8 @@ Foam::scalar Foam::SPH::isph::maxDeltaT() const
     {
         dt = min(dt, Cvisc_*h*h/nu);
     }
+    // The explicit heat equation, C_visq h^2/K_E
+    if (thermal_) dt = min(dt, thermal_->maxDeltaT(h));
     const scalar accel =
         (freeSurface_ || maxAccel_ == 0) ? max(maxAccel_, mag(g)) : maxAccel_;
     if (accel > 0)

@@ -61,6 +61,14 @@ void Foam::SPH::isph::initialise(const scalar rho0)
 
     // Before the restart's fields are read: the model adds its own
     turbulence_ = turbulenceModel::New(runTime_, parts_);
+    if (thermalProperties::present(runTime_))
+    {
+        thermal_.reset(new heatTransfer(runTime_, parts_));
+    }
+    else
+    {
+        Info<< "No 0/T: isothermal" << nl;
+    }
 
     const label nVertices = walls_->points().size();
     if (isFile(parts_.path()/"positions"))
@@ -160,6 +168,7 @@ void Foam::SPH::isph::buildCloud()
     }
     moveWalls::move(*work_, runTime_.value(), true);
     connectTurbulence();
+    connectThermal();
 }
 
 

@@ -1,0 +1,340 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "heatTransfer.H"
+#include "kernelDispatch.H"
+#include "initialField.H"
+#include "wallConditions.H"
+#include "fluidProperties.H"
+#include "uniformDimensionedFields.H"
+#include "Time.H"
+#include <cmath>
+
+// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+
+    //- 'key uniform X;' of a wall patch's entry in 0/T, or a FatalIOError
+    //- naming the file, the patch and the entry
+    scalar uniformScalar
+    (
+        const dictionary& d,
+        const word& key,
+        const word& patch,
+        const word& type
+    )
+    {
+        if (!d.found(key))
+        {
+            FatalIOErrorInFunction(d)
+                << "Missing entry '" << key << "' of the " << type << " T of"
+                << " wall patch " << patch << ": expected '" << key
+                << " uniform <value>;'"
+                << (key == "gradient" ? " (K/m along the outward normal)" : "")
+                << exit(FatalIOError);
+        }
+        ITstream& is = d.lookup(key);
+        const token first(is);
+        if (!first.isWord() || first.wordToken() != "uniform")
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry '" << key << "' of wall patch " << patch << ": expected '"
+                << key << " uniform <value>;', found " << first
+                << " (a wall patch of the SPH mesh has no faces to give"
+                << " values to)" << exit(FatalIOError);
+        }
+        const token value(is);
+        if (!value.isNumber() || !std::isfinite(value.number()))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry '" << key << "' of wall patch " << patch << ": expected '"
+                << key << " uniform <value>;', found " << value
+                << exit(FatalIOError);
+        }
+        return value.number();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::SPH::heatTransfer::isothermalFlux
+(
+    const scalar Ta,
+    const scalar Ts,
+    const scalar d,
+    const scalar dr,
+    const scalar K,
+    const scalar nu,
+    const scalar ka,
+    const turbulentWall& tw
+)
+{
+    // dr_as = max(d_as, dr) (22), as the velocity's
+    const scalar dAs = max(d, dr);
+    if (tw.law && ka > 0)
+    {
+        // (35)-(37): y+ from u_k
+        const scalar uk = std::pow(tw.Cmu, 0.25)*std::sqrt(ka);
+        const scalar yPlus = dAs*uk/nu;
+        if (yPlus >= tw.law->y1Plus())
+        {
+            return uk*(Ta - Ts)/tw.law->Tplus(yPlus);
+        }
+    }
+    // (34), also the viscous layer of (37): u_k (T_a - T_s)/(Pr y+)
+    return K*(Ta - Ts)/dAs;
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::heatTransfer::readWalls(const wallMesh& walls, const label nFluid)
+{
+    typedef wallConditions::conditionType cType;
+    const wallConditions conditions(runTime_, walls, "T");
+    conditions.allowOnly
+    (
+        {cType::fixedValue, cType::fixedGradient, cType::zeroGradient},
+        "isphFoam's temperature walls"
+    );
+    const wordList& names = walls.patchNames();
+    scalarList patchValue(names.size(), Zero);
+    List<wallKind> patchKind(names.size(), adiabatic);
+    forAll(names, patchi)
+    {
+        const dictionary& d = conditions.dict(patchi);
+        switch (conditions.type(patchi))
+        {
+            case cType::fixedValue:
+                patchKind[patchi] = isothermal;
+                patchValue[patchi] = uniformScalar(d, "value", names[patchi], "fixedValue");
+                break;
+            case cType::fixedGradient:
+                patchKind[patchi] = fluxImposed;
+                patchValue[patchi] =
+                    uniformScalar(d, "gradient", names[patchi], "fixedGradient");
+                break;
+            default:
+                break;
+        }
+        Info<< "    T on " << names[patchi] << ": "
+            << conditions.typeName(patchi) << " "
+            << (patchKind[patchi] == adiabatic ? "(adiabatic)"
+              : patchKind[patchi] == isothermal ? "(isothermal, eqs. (33)-(34))"
+              : "(imposed flux, eqs. (31)-(32))")
+            << (patchKind[patchi] == adiabatic ? "" : " ")
+            << (patchKind[patchi] == adiabatic ? word() : Foam::name(patchValue[patchi]))
+            << nl;
+    }
+
+    // Per segment, then per vertex particle: an isothermal segment fixes
+    // its vertices (a corner with another wall takes the imposed value)
+    const labelList& segPatch = walls.segmentPatch();
+    const List<labelPair>& segs = walls.segments();
+    const label nV = walls.points().size();
+    walls_.kind.setSize(segPatch.size());
+    walls_.gradient.setSize(segPatch.size(), Zero);
+    walls_.fixed.setSize(nV, false);
+    walls_.value.setSize(nV, Zero);
+    walls_.vertexSegments.setSize(nV);
+    forAll(segPatch, s)
+    {
+        const label patchi = segPatch[s];
+        walls_.kind[s] = patchKind[patchi];
+        if (patchKind[patchi] == fluxImposed)
+        {
+            walls_.gradient[s] = patchValue[patchi];
+        }
+        for (const label v : {segs[s].first(), segs[s].second()})
+        {
+            walls_.vertexSegments[v].append(s);
+            if (patchKind[patchi] == isothermal)
+            {
+                walls_.fixed[v] = true;
+                walls_.value[v] = patchValue[patchi];
+            }
+        }
+    }
+}
+
+
+void Foam::SPH::heatTransfer::readInitial()
+{
+    const initialField T0(runTime_, "T");
+    SubList<scalar> T(parts_.field<scalar>("T"), work_->nFluid);
+    if (T0.read(T))
+    {
+        Info<< "Initial temperature " << T[0] << " from " << T0.path() << nl;
+    }
+    else
+    {
+        Info<< "Initial temperature per particle from " << T0.path() << nl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
+:
+    runTime_(runTime),
+    parts_(parts),
+    props_(runTime),
+    wallFunction_(props_.Pr, props_.Prt, 0.41),
+    rho_(fluidProperties(runTime).rho0),
+    g_(fluidProperties(runTime).g),
+    ghRef_(0),
+    nut_(nullptr)
+{
+    // OpenFOAM's readhRef.H and gh.H: hRef optional, 0 without the file
+    const uniformDimensionedScalarField hRef
+    (
+        IOobject
+        (
+            "hRef", runTime.constant(), runTime,
+            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+        ),
+        dimensionedScalar("hRef", dimLength, Zero)
+    );
+    ghRef_ = -mag(g_)*hRef.value();
+
+    Info<< "Heat transfer (0/T): beta " << props_.beta << ", TRef "
+        << props_.TRef << ", Pr " << props_.Pr << ", Prt " << props_.Prt
+        << ", K = nu/Pr " << props_.K << ", hRef " << hRef.value() << nl;
+    parts_.add<scalar>("T");
+    parts_.add<scalar>("p_rgh");
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::heatTransfer::connect
+(
+    const turbulenceCoupling& coupling,
+    const wallMesh& walls,
+    const bool fresh,
+    const scalarField* nut
+)
+{
+    work_.reset(new turbulenceCoupling(coupling));
+    nut_ = nut;
+    if (parts_.found<scalar>("k"))
+    {
+        turbulent_.k = &parts_.field<scalar>("k");
+        turbulent_.law = &wallFunction_;
+    }
+    readWalls(walls, coupling.nFluid);
+    KE_.setSize(parts_.size(), props_.K);
+    L_.setSize(parts_.size(), Zero);
+    if (fresh)
+    {
+        readInitial();
+    }
+}
+
+
+void Foam::SPH::heatTransfer::correct(const scalar dt)
+{
+    const turbulenceCoupling& w = *work_;
+    scalarField& T = parts_.field<scalar>("T");
+
+    // K_E = K + nu_T/Prt (nu_T = 0 at the vertex particles)
+    for (label i = 0; i < w.nFluid; ++i)
+    {
+        KE_[i] = props_.K + (nut_ ? (*nut_)[i]/props_.Prt : 0);
+    }
+    dispatch(w.W, [&](const auto& K)
+    {
+        vertexValues(K, w.nbrs, w.usaw, w.V, w.nFluid, walls_, T);
+        laplacian
+        (
+            K, w.nbrs, w.usaw, w.V, w.nFluid, KE_, T, walls_, props_.K,
+            props_.nu, w.dr, turbulent_, L_
+        );
+    });
+    for (label i = 0; i < w.nFluid; ++i)
+    {
+        T[i] += dt*L_[i];
+    }
+}
+
+
+void Foam::SPH::heatTransfer::addBuoyancy
+(
+    const scalar dt,
+    UList<vector2D>& Ustar,
+    const bool vertices,
+    List<vector2D>& wallForce
+)
+{
+    const turbulenceCoupling& w = *work_;
+    scalarField& T = parts_.field<scalar>("T");
+    dispatch(w.W, [&](const auto& K)
+    {
+        vertexValues(K, w.nbrs, w.usaw, w.V, w.nFluid, walls_, T);
+    });
+    const label n = vertices ? T.size() : w.nFluid;
+    for (label i = 0; i < n; ++i)
+    {
+        Ustar[i] += dt*buoyancy(g_, props_.beta, T[i], props_.TRef);
+    }
+    const List<labelPair>& ends = w.usaw.segmentParticles();
+    wallForce.setSize(ends.size());
+    forAll(ends, s)
+    {
+        const scalar Ts = 0.5*(T[ends[s].first()] + T[ends[s].second()]);
+        wallForce[s] = buoyancy(g_, props_.beta, Ts, props_.TRef);
+    }
+}
+
+
+void Foam::SPH::heatTransfer::updatePrgh(const scalar)
+{
+    const scalarField& T = parts_.field<scalar>("T");
+    const scalarField& p = parts_.field<scalar>("p");
+    const vector2DField& x = parts_.positions();
+    scalarField& pRgh = parts_.field<scalar>("p_rgh");
+    forAll(pRgh, i)
+    {
+        const scalar rhok = 1 - props_.beta*(T[i] - props_.TRef);
+        pRgh[i] = p[i] - rho_*rhok*((g_ & x[i]) - ghRef_);
+    }
+}
+
+
+Foam::scalar Foam::SPH::heatTransfer::maxDeltaT(const scalar h) const
+{
+    scalar KMax = props_.K;
+    if (nut_)
+    {
+        for (label i = 0; i < work_->nFluid; ++i)
+        {
+            KMax = max(KMax, props_.K + (*nut_)[i]/props_.Prt);
+        }
+    }
+    return KMax > 0 ? 0.125*h*h/KMax : VGREAT;
+}
+
+
+Foam::string Foam::SPH::heatTransfer::description() const
+{
+    return
+        "T^{n+1} = T^n + dt L{K_E, T^n} (Leroy et al. 2015, eq. (17)), walls"
+        " (31)-(34)" + string(turbulent_.law ? ", (35)-(38) turbulent" : "")
+      + "; K = nu/Pr = " + Foam::name(props_.K);
+}
+
+
+Foam::string Foam::SPH::heatTransfer::buoyancyDescription() const
+{
+    return
+        "u** += -dt g beta (T - TRef) (Leroy et al. 2015, eq. (17)), beta "
+      + Foam::name(props_.beta) + ", TRef " + Foam::name(props_.TRef);
+}
+
+
+// ************************************************************************* //

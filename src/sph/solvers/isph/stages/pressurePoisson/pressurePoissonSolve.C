@@ -1,0 +1,214 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    pressurePoisson: the wall condition, the solve and what follows it
+    (the pressure from A, the confined flow's level, the rows held at
+    pMin), apart from the rows' assembly in pressurePoisson.C.
+
+\*---------------------------------------------------------------------------*/
+
+#include "pressurePoisson.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::pressurePoisson::wallCondition(const scalar dt)
+{
+    // Eq. (43) with the vertex particles' u* = u_w^n + dt g (45): zero at
+    // a wall that does not accelerate, plus rho f_s.n_s of a body force
+    // of u** at the wall (isphWork::wallAcceleration: buoyancy)
+    if (!work_.motion.any() && work_.wallAcceleration.empty()) return;
+    const label nFluid = work_.nFluid;
+    const List<vector2D>& normal = work_.usaw.segmentNormals();
+    scalarList& dAdn = laplacian_.wallFlux();
+    dAdn = Zero;
+    if (work_.motion.any())
+    {
+        work_.motion.vertices(runTime_.value(), work_.wallX, work_.wallU);
+        const vector2DField& U = work_.parts.field<vector2D>("U");
+        const List<labelPair>& ends = work_.usaw.segmentParticles();
+        forAll(dAdn, s)
+        {
+            const label v1 = ends[s].first();
+            const label v2 = ends[s].second();
+            const vector2D uOld(0.5*(U[v1] + U[v2]));
+            const vector2D uNew
+                (0.5*(work_.wallU[v1 - nFluid] + work_.wallU[v2 - nFluid]));
+            dAdn[s] = work_.rho0*((uOld - uNew) & normal[s])/dt;
+        }
+    }
+    forAll(work_.wallAcceleration, s)
+    {
+        dAdn[s] += work_.rho0*(work_.wallAcceleration[s] & normal[s]);
+    }
+}
+
+
+Foam::label Foam::SPH::pressurePoisson::anchorFloatingClusters()
+{
+    // A set of rows coupled only among themselves with no row that fixes
+    // the level (a Dirichlet value moved to the right-hand side, or a
+    // ghost row's diagonal, make a row strictly dominant) is singular: a
+    // droplet sliding down a wall, all its particles kept off the surface
+    // by the wall-crossing test (39), with the wall's vertex particles
+    // (the 4 mm obstacle dam-break's pressure solve failed so). Its fluid
+    // particles get p = 0
+    const sparseMatrix& M = laplacian_.matrix();
+    const label n = M.rows();
+    labelList& kind = laplacian_.kinds();
+    labelList cluster(n, -1);
+    DynamicList<label> members, stack;
+    label nFixed = 0;
+    for (label start = 0; start < n; ++start)
+    {
+        if (cluster[start] >= 0 || kind[start] == laplacianMatrix::dirichlet)
+        {
+            continue;
+        }
+        members.clear();
+        stack.clear();
+        stack.append(start);
+        cluster[start] = start;
+        bool anchored = false;
+        while (stack.size())
+        {
+            const label i = stack.remove();
+            members.append(i);
+            scalar diag = 0, off = 0;
+            for (sparseMatrix::InnerIterator it(M, i); it; ++it)
+            {
+                const label j = it.col();
+                if (j == i)
+                {
+                    diag = it.value();
+                    continue;
+                }
+                off += mag(it.value());
+                if (cluster[j] < 0)
+                {
+                    cluster[j] = start;
+                    stack.append(j);
+                }
+            }
+            anchored = anchored || diag > off*(1 + 1e-9);
+        }
+        if (anchored) continue;
+        for (const label i : members)
+        {
+            if (i < work_.nFluid)
+            {
+                kind[i] = laplacianMatrix::dirichlet;
+                work_.surfaceNormal[i] = Zero;
+                ++nFixed;
+            }
+        }
+    }
+    return nFixed;
+}
+
+
+void Foam::SPH::pressurePoisson::makeCompatible()
+{
+    const scalar* gamma = work_.usaw.gamma().cdata();
+    const scalarList& V = work_.V;
+    const label n = work_.parts.size();
+    vectorN& b = laplacian_.source();
+    scalar sumW = 0, sumWB = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar w = V[i]*gamma[i];
+        sumW += w;
+        sumWB += w*b[i];
+    }
+    const scalar mean = sumWB/sumW;
+    for (label i = 0; i < n; ++i)
+    {
+        if (V[i] > 0)
+        {
+            b[i] -= mean;
+        }
+    }
+}
+
+
+void Foam::SPH::pressurePoisson::setPressure()
+{
+    const label n = work_.parts.size();
+    scalarField& p = work_.parts.field<scalar>("p");
+    const vector2DField& x = work_.parts.positions();
+    const scalar rho0 = work_.rho0;
+    const vector2D g = work_.g;
+    for (label i = 0; i < n; ++i)
+    {
+        p[i] = xA_[i] + rho0*(g & x[i]);
+    }
+    if (!freeSurface_)
+    {
+        scalar mean = 0;
+        for (label i = 0; i < work_.nFluid; ++i)
+        {
+            mean += p[i];
+        }
+        mean /= work_.nFluid;
+        for (label i = 0; i < n; ++i)
+        {
+            p[i] += pRefValue_ - mean;
+        }
+    }
+}
+
+
+Foam::label Foam::SPH::pressurePoisson::holdAtPMin()
+{
+    isphWork& w = work_;
+    const scalarField& p = w.parts.field<scalar>("p");
+    const vector2DField& x = w.parts.positions();
+    labelList& kind = laplacian_.kinds();
+    scalarList& f = laplacian_.dirichletValues();
+    label n = 0;
+    for (label i = 0; i < w.nFluid; ++i)
+    {
+        if (kind[i] == laplacianMatrix::interior && p[i] < pMin_)
+        {
+            // A = s f with s = -rho: p = pMin
+            kind[i] = laplacianMatrix::dirichlet;
+            f[i] = (w.g & x[i]) - pMin_/w.rho0;
+            ++n;
+        }
+    }
+    return n;
+}
+
+
+void Foam::SPH::pressurePoisson::solve()
+{
+    // Warm start from the last pressure
+    isphWork& w = work_;
+    const label n = w.parts.size();
+    const scalarField& p = w.parts.field<scalar>("p");
+    const vector2DField& x = w.parts.positions();
+    xA_.resize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        xA_[i] = p[i] - w.rho0*(w.g & x[i]);
+    }
+
+    lastSolve_ = solver_->solve(laplacian_.matrix(), laplacian_.source(), xA_);
+    nIterations_ += lastSolve_.nIterations();
+    setPressure();
+
+    if (!lastSolve_.converged() && stopIfNotConverged_)
+    {
+        throw stageFailure
+        (
+            "The pressure solve did not converge: residual "
+          + Foam::name(lastSolve_.finalResidual()) + " after "
+          + Foam::name(lastSolve_.nIterations()) + " iterations, tolerance "
+          + Foam::name(solver_->tolerance()) + " (system/sphSolution"
+            " solvers.p; ISPH { stopIfNotConverged no; } accepts it)"
+        );
+    }
+}
+
+
+// ************************************************************************* //
