@@ -25,18 +25,29 @@ Description
 
 using namespace Foam;
 
+namespace
+{
+    //- A copy of tutorials/heatTransfer/<name> (with the readers its
+    //- compare imports from the folder above), cleaned and run with -test
+    fileName runTest(const std::string& name, std::string& out)
+    {
+        const fileName dir = sphTest::copyTutorial("heatTransfer/" + name, name);
+        sphTest::run("cp " + std::string(SPHFOAM_SOURCE_DIR)
+          + "/tutorials/heatTransfer/heatTransferData.py " + dir.path());
+        EXPECT_EQ
+        (
+            sphTest::runWithBashrc(dir + "/Allclean && " + dir + "/Allrun -test", out),
+            0
+        ) << out;
+        return dir;
+    }
+}
+
+
 TEST(lockExchangeTutorial, fvFrontsNearHaertelsFroudeNumberAndSymmetric)
 {
-    const fileName dir =
-        sphTest::copyTutorial("heatTransfer/lockExchange", "lockExchange");
-    sphTest::run("cp " + std::string(SPHFOAM_SOURCE_DIR)
-      + "/tutorials/heatTransfer/heatTransferData.py " + dir.path());
     std::string out;
-    ASSERT_EQ
-    (
-        sphTest::runWithBashrc(dir + "/Allclean && " + dir + "/Allrun -test", out),
-        0
-    ) << out;
+    const fileName dir = runTest("lockExchange", out);
     EXPECT_NE(out.find("skipping the SPH side"), std::string::npos) << out;
 
     const auto row = sphTest::tableRow(dir/"results"/"front.dat", {"fv", "5"});
@@ -52,16 +63,8 @@ TEST(lockExchangeTutorial, fvFrontsNearHaertelsFroudeNumberAndSymmetric)
 
 TEST(heatedLidCavityTutorial, fvHotWallNusseltNearTheFineMeshValue)
 {
-    const fileName dir =
-        sphTest::copyTutorial("heatTransfer/heatedLidCavity", "heatedLidCavity");
-    sphTest::run("cp " + std::string(SPHFOAM_SOURCE_DIR)
-      + "/tutorials/heatTransfer/heatTransferData.py " + dir.path());
     std::string out;
-    ASSERT_EQ
-    (
-        sphTest::runWithBashrc(dir + "/Allclean && " + dir + "/Allrun -test", out),
-        0
-    ) << out;
+    const fileName dir = runTest("heatedLidCavity", out);
 
     const auto row = sphTest::tableRow(dir/"results"/"lid.dat", {"fv", "32"});
     ASSERT_GE(row.size(), 7u) << out;
