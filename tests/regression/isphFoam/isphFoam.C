@@ -541,6 +541,34 @@ TEST(isphFoam, pMinLetsWaterLeaveACeilingInsteadOfHangingFromIt)
 }
 
 
+TEST(isphFoam, restartsFromATimeDirectoryWithALongName)
+{
+    // Kills and restarts lengthen the time names (OpenFOAM adds digits
+    // until a name reads back as t + deltaT). Time's own search for the
+    // start directory missed 1.236806004498073 (exact value
+    // 1.23680600449807288): the run started afresh from constant/sphMesh
+    // at "1.23681" without a word (found by killDuringWrite in CI)
+    const fileName dir = tankCase("isphLongTimeName", "0.05", "0.1");
+    setEntry(dir/"system"/"controlDict", "writeInterval", "0.1");
+    std::string out;
+    ASSERT_EQ(mesh(dir, out), 0) << out;
+    ASSERT_EQ(solve(dir, out), 0) << tail(out);
+    const std::string name = "1.236806004498073", value = "1.23680600449807288";
+    run("mv " + dir/"0.1" + " " + dir/name
+      + " && sed -i 's/^value .*/value " + value + ";/; s/^name .*/name \"" + name + "\";/' "
+      + dir/name/"uniform"/"time"
+      + " && sed -i 's/^time .*/time " + value + ";/; s/^writeTimeOrigin .*/writeTimeOrigin "
+      + value + ";/' " + dir/name/"uniform"/"isphState", out);
+    setEntry(dir/"system"/"controlDict", "startFrom", "latestTime");
+    setEntry(dir/"system"/"controlDict", "endTime", "1.3");
+    ASSERT_EQ(solve(dir, out), 0) << tail(out);
+    EXPECT_NE(out.find("Restarting from"), std::string::npos) << tail(out);
+    EXPECT_NE(out.find(name + "/lagrangian/sph"), std::string::npos) << tail(out);
+    EXPECT_EQ(out.find("Starting from the particles of constant/sphMesh"), std::string::npos)
+        << tail(out);
+}
+
+
 TEST(isphFoam, pressureSolveThatDoesNotConvergeStops)
 {
     const fileName dir = cavityCase("isphNotConverged", "20", "0.5");

@@ -132,6 +132,36 @@ Foam::label Foam::SPH::timeClock::takeOverPurgeWrite(Time& runTime)
 }
 
 
+void Foam::SPH::timeClock::matchStartDirectory(Time& runTime)
+{
+    // Time looks for a start directory written with more digits than
+    // timePrecision from 18 digits down, and stops where two precisions
+    // spell the time alike: 1.236806004498073 (18 digits: ...0731, 17: the
+    // same) was never tried at 16, and the restart looked in 1.23681.
+    // Restarts lengthen the names (OpenFOAM adds digits until the next
+    // name reads back as t + deltaT), so a long kill-and-restart run meets
+    // it. The directory whose value is the start time gives its own name
+    if (isDir(runTime.timePath()))
+    {
+        return;
+    }
+    const scalar t = runTime.value();
+    for (const instant& dir : runTime.times())
+    {
+        if
+        (
+            dir.name() != runTime.constant()
+         && mag(dir.value() - t) <= 1e-12*max(mag(t), scalar(1))
+         && isDir(runTime.path()/dir.name())
+        )
+        {
+            runTime.setTime(dir, runTime.timeIndex());
+            return;
+        }
+    }
+}
+
+
 void Foam::SPH::timeClock::selectStart(Time& runTime)
 {
     const fileName dir(runTime.timePath());

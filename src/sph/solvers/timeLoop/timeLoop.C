@@ -390,6 +390,7 @@ void Foam::SPH::timeLoop::switchOffFpe()
 void Foam::SPH::timeLoop::prepareStart(Time& runTime, const word& stateName)
 {
     atomicTimeDirectory::removeUnfinished(runTime);
+    timeClock::matchStartDirectory(runTime);
     timeClock::selectStart(runTime);
     const IOdictionary state
     (
