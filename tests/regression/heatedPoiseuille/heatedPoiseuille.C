@@ -14,10 +14,12 @@ Description
       which a wall term off by its factor 2, a flux of the wrong sign or a
       missing T shift all exceed;
     - ISPH L2 (41): measured 5e-5; checked to 5e-4;
-    - ISPH p*+: measured 3.2 % at dr/L = 0.1 (1.8 % at 0.05), the
-      pressure noise of the flow and an error near the walls; checked to
-      6 % (without the Boussinesq force in the pressure's wall condition
-      it was 7.5 %; without the force at all 100 %);
+    - ISPH p*+: measured 0.19 % at dr/L = 0.1, the rows averaged over
+      the 50 files of the last quarter (3.2 % over 5 files: the rows'
+      pressure oscillates coherently as they slide past each other, see
+      compare); checked to 1 %, the criterion of issue 15 (without the
+      Boussinesq force in the pressure's wall condition it was 7.5 %;
+      without the force at all 100 %);
     - FV: T+ and p*+ measured 3e-6 (the steady state is exact on the
       mesh); checked to 1e-4;
     - wallNusselt (42) on both walls: 0.509 against 0.5; checked to 4 %.
@@ -79,7 +81,7 @@ TEST(heatedPoiseuilleTutorial, temperatureAndDynamicPressureAgainstTable2)
 
     EXPECT_LT(std::stod(sph[4]), 1e-3) << "ISPH T+";
     EXPECT_LT(std::stod(sph[8]), 5e-4) << "ISPH L2 (41)";
-    EXPECT_LT(std::stod(sph[5]), 0.06) << "ISPH p*+";
+    EXPECT_LT(std::stod(sph[5]), 0.01) << "ISPH p*+";
     EXPECT_LT(std::stod(fv[4]), 1e-4) << "FV T+";
     EXPECT_LT(std::stod(fv[5]), 1e-4) << "FV p*+";
 

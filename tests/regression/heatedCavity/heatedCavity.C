@@ -1,0 +1,140 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    The differentially heated cavity tutorial (Leroy et al. 2015, section
+    4.2; de Vahl Davis 1983) as a user runs it: Allrun -test runs
+    buoyantBoussinesqSimpleFoam at 16^2 and 32^2 and isphFoam at 16^2
+    (225 fluid particles) at Ra 1e3 and 1e5 to steady state, and compare
+    writes the mean Nu, the velocity maxima and the profile errors.
+
+    Tolerances (measured figures of the SPH runs in the tutorial's README,
+    the coarse 16^2 of the test):
+    - Ra 1e3: mean Nu on the cold wall (compare's least-squares fit)
+      measured 1.126 against de Vahl Davis' 1.117 (+0.8 %), checked to
+      3 %; u+max 3.565 and v+max 3.610 against 3.649 and 3.697 (-2.3 %,
+      -2.4 %), checked to 5 %; T on the centrelines 2.6e-2 off FV 32^2,
+      checked to 5e-2;
+    - Ra 1e5 (16^2 is 2-3 particles across its boundary layers): mean Nu
+      4.91 against 4.509 (+9 %), checked to 15 %; u+max 30.2 against
+      34.73 (-13 %), checked to 20 %; v+max 68.0 against 68.59 (-0.8 %),
+      checked to 5 %; T 9.0e-2 off FV 32^2, checked to 0.15.
+      Without the buoyancy the fluid stays at rest (u+ = 0, Nu = 1),
+      which fails all of them;
+    - the wallNusselt function object (Leroy et al. 2015, eq. (42)) on the
+      cold wall: 1.189 at Ra 1e3 (+6 %), checked to 10 % of 1.117; 3.92
+      at Ra 1e5 (-13 %, the wall vertices' G- on 2-3 particles), checked
+      to 20 % of 4.509.
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "testCase.H"
+
+#include <fstream>
+#include <sstream>
+
+using namespace Foam;
+
+namespace
+{
+    //- The words of the first row of file whose first words are key
+    std::vector<std::string> rowOf
+    (
+        const fileName& file,
+        const std::vector<std::string>& key
+    )
+    {
+        std::ifstream is(file);
+        std::string line;
+        while (std::getline(is, line))
+        {
+            std::istringstream ls(line);
+            std::vector<std::string> w;
+            std::string s;
+            while (ls >> s) w.push_back(s);
+            if (w.size() < key.size() + 4) continue;
+            bool match = true;
+            for (size_t k = 0; k < key.size(); ++k)
+            {
+                match = match && w[k] == key[k];
+            }
+            if (match) return w;
+        }
+        return {};
+    }
+
+    //- The average of the last line of a wallNusselt.dat
+    double lastNusselt(const fileName& file)
+    {
+        std::ifstream is(file);
+        std::string line, last;
+        while (std::getline(is, line))
+        {
+            if (!line.empty() && line[0] != '#') last = line;
+        }
+        std::istringstream ls(last);
+        std::string t, patch;
+        double mn = 0, mx = 0, integral = 0, average = -1;
+        ls >> t >> patch >> mn >> mx >> integral >> average;
+        return average;
+    }
+
+    struct expected
+    {
+        std::string Ra;
+        double Nu, NuTol, u, uTol, v, vTol, eT, NuWall, NuWallTol;
+    };
+}
+
+
+TEST(heatedCavityTutorial, sphNusseltMaximaAndProfilesAgainstDeVahlDavis)
+{
+    // compare imports ../heatTransferData.py
+    const fileName dir = sphTest::copyTutorial
+    (
+        "heatTransfer/heatedCavity", "heatTransfer/heatedCavity"
+    );
+    std::string out;
+    sphTest::run
+    (
+        "cp " + std::string(SPHFOAM_SOURCE_DIR)
+      + "/tutorials/heatTransfer/heatTransferData.py " + dir.path()
+      + " && rm -rf " + dir + "/runs " + dir + "/results",
+        out
+    );
+    ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun -test", out), 0) << out;
+
+    // summary.dat: Ra method n cpu Nu NuDVD NuMeanDVD umax uDVD vmax vDVD;
+    // Ra<R>.dat: method n cells iter cpu NuCold NuHot NuSnGrad umax y vmax
+    // x eU eV eT eNu
+    const std::vector<expected> cases
+    {
+        {"1e3", 1.117, 0.03, 3.649, 0.05, 3.697, 0.05, 0.05, 1.117, 0.10},
+        {"1e5", 4.509, 0.15, 34.73, 0.20, 68.59, 0.05, 0.15, 4.509, 0.20}
+    };
+    for (const expected& e : cases)
+    {
+        const std::vector<std::string> s =
+            rowOf(dir/"results"/"summary.dat", {e.Ra, "sph", "16"});
+        const std::vector<std::string> t =
+            rowOf(dir/"results"/("Ra" + e.Ra + ".dat"), {"sph", "16"});
+        ASSERT_EQ(s.size(), 11u) << "Ra " << e.Ra << nl << out;
+        ASSERT_EQ(t.size(), 16u) << "Ra " << e.Ra << nl << out;
+        EXPECT_NEAR(std::stod(s[4]), e.Nu, e.NuTol*e.Nu) << "mean Nu, Ra " << e.Ra;
+        EXPECT_NEAR(std::stod(s[7]), e.u, e.uTol*e.u) << "u+max, Ra " << e.Ra;
+        EXPECT_NEAR(std::stod(s[9]), e.v, e.vTol*e.v) << "v+max, Ra " << e.Ra;
+        EXPECT_LT(std::stod(t[14]), e.eT) << "T profiles, Ra " << e.Ra;
+
+        const double NuWall = lastNusselt
+        (
+            dir/"runs"/("Ra" + e.Ra)/"sph16"/"postProcessing"/"Nusselt"/"0"
+           /"wallNusselt.dat"
+        );
+        EXPECT_NEAR(NuWall, e.NuWall, e.NuWallTol*e.NuWall)
+            << "wallNusselt, Ra " << e.Ra;
+    }
+}
+
+
+// ************************************************************************* //
