@@ -231,6 +231,55 @@ TEST(sphMeshApplication, negativeSpacingNamesTheFileLineAndEntry)
 }
 
 
+TEST(sphMeshApplication, perturbationMovesTheFluidByUpToItsFractionOfDr)
+{
+    const std::string body =
+        "dr 0.1;\n"
+        "fluid { w { type box; min (0 0); max (1 1); } }\n"
+        "walls { t { type box; min (0 0); max (1 1); } }\n";
+    const fileName lattice = makeMeshCase("sphMeshLattice", body);
+    const fileName moved = makeMeshCase("sphMeshPerturbed", body + "perturbation 0.3;\n");
+    std::string out;
+    ASSERT_EQ(run(sphMeshExe + " -case " + lattice, out), 0) << out;
+    ASSERT_EQ(run(sphMeshExe + " -case " + moved, out), 0) << out;
+    EXPECT_NE(out.find("moved at random by up to 0.3 dr"), std::string::npos) << out;
+
+    auto t0 = sphTest::makeTime(lattice);
+    auto t1 = sphTest::makeTime(moved);
+    const List<vector2D> a(readPositions(*t0, "fluid"));
+    const List<vector2D> b(readPositions(*t1, "fluid"));
+    ASSERT_EQ(a.size(), 100);
+    ASSERT_EQ(b.size(), a.size());
+    scalar largest = 0, mean = 0;
+    forAll(a, i)
+    {
+        const scalar d = mag(b[i] - a[i]);
+        largest = max(largest, d);
+        mean += d/a.size();
+        // Still inside the box, at least 0.2 dr from its walls
+        EXPECT_GE(min(b[i].x(), b[i].y()), 0.02 - 1e-12);
+        EXPECT_LE(max(b[i].x(), b[i].y()), 0.98 + 1e-12);
+    }
+    EXPECT_LE(largest, 0.03 + 1e-12);
+    // Uniform in the disc: the mean distance is 2/3 of the radius
+    EXPECT_NEAR(mean, 0.02, 0.003);
+}
+
+
+TEST(sphMeshApplication, perturbationOfHalfDrOrMoreNamesTheEntry)
+{
+    const fileName dir = makeMeshCase("sphMeshBadPerturbation",
+        "dr 0.1;\n"
+        "fluid { w { type box; min (0 0); max (1 1); } }\n"
+        "walls { t { type box; min (0 0); max (1 1); } }\n"
+        "perturbation 0.5;\n");
+    std::string out;
+    EXPECT_EQ(run(sphMeshExe + " -case " + dir, out), 1);
+    EXPECT_NE(out.find("Entry 'perturbation' is 0.5"), std::string::npos) << out;
+    EXPECT_NE(out.find("sphMeshDict.perturbation at line 5."), std::string::npos) << out;
+}
+
+
 TEST(sphMeshApplication, fluidOutsideTheWallsIsAnError)
 {
     const fileName dir = makeMeshCase("sphMeshOutside",

@@ -235,6 +235,7 @@ Foam::SPH::particleGenerator::particleGenerator
             << " nowhere dr/2 away from them (dr = " << dr_ << ")" << nl
             << exit(FatalIOError);
     }
+    perturbFluid();
 
     Info<< "Dummy particle layers: " << nLayers_ << nl;
     walls_->dummyLayers(nLayers_, dr_, dummy_, dummyLayer_, dummyPatch_);

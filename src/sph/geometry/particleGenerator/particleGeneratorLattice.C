@@ -8,6 +8,8 @@ Description
 
 #include "particleGenerator.H"
 
+#include "Random.H"
+#include "mathematicalConstants.H"
 #include <cmath>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -177,6 +179,37 @@ void Foam::SPH::particleGenerator::seedFluid
         fluidOutsideError(nOutside, pts.size(), example);
     }
     fluid_.transfer(pts);
+}
+
+
+void Foam::SPH::particleGenerator::perturbFluid()
+{
+    scalar amplitude = 0;
+    if (!dict_.readIfPresent("perturbation", amplitude))
+    {
+        return;
+    }
+    // Below dr/2: the lattice keeps dr/2 from the walls, so no particle
+    // can be moved onto or through one
+    if (!(amplitude >= 0 && amplitude <= 0.45))
+    {
+        FatalIOErrorInFunction(dict_.lookup("perturbation"))
+            << "Entry 'perturbation' is " << amplitude << "; expected a"
+            << " fraction of dr from 0 to 0.45 (the lattice is dr/2 from"
+            << " the walls)" << nl << exit(FatalIOError);
+    }
+    Random rnd(dict_.getOrDefault<label>("perturbationSeed", 1));
+    const SPH::domain& dom = walls_->domain();
+    const scalar radius = amplitude*dr_;
+    for (vector2D& p : fluid_)
+    {
+        // Uniform in the disc of that radius
+        const scalar r = radius*std::sqrt(rnd.sample01<scalar>());
+        const scalar theta = constant::mathematical::twoPi*rnd.sample01<scalar>();
+        p = dom.wrap(p + r*vector2D(std::cos(theta), std::sin(theta)));
+    }
+    Info<< "Fluid particles moved at random by up to " << amplitude
+        << " dr (perturbation)" << nl;
 }
 
 
