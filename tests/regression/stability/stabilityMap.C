@@ -1,0 +1,122 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    The stability map's short form (tutorials/stability, Allrun -quick): at
+    least 25 runs of the stiff and extreme corners, none of which may go
+    wrong silently (a signal, a hang, an exit without End or error, or an
+    end whose last picture has a non-finite value, a lost particle or a
+    speed beyond the case's physical bound). The pressure solve made hard
+    on purpose must stop loudly, naming the solver settings; with
+    stopIfNotConverged no it must run; the large time steps with
+    retryOnFailure must count their retries; the still tanks at rest for
+    2 t sqrt(g/H) must stay hydrostatic within 5 % of rho g H.
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "testCase.H"
+#include <fstream>
+#include <sstream>
+
+using namespace Foam;
+
+namespace
+{
+    //- The rows of results/stability.csv, by run name (quoted fields with
+    //- commas are kept whole)
+    std::map<std::string, std::map<std::string, std::string>>
+    readTable(const fileName& file)
+    {
+        std::ifstream is(file);
+        std::string line;
+        auto split = [](const std::string& l)
+        {
+            std::vector<std::string> f;
+            std::string cur;
+            bool quoted = false;
+            for (char c : l)
+            {
+                if (c == '"') quoted = !quoted;
+                else if (c == ',' && !quoted) { f.push_back(cur); cur.clear(); }
+                else cur += c;
+            }
+            f.push_back(cur);
+            return f;
+        };
+        std::getline(is, line);
+        const std::vector<std::string> header(split(line));
+        std::map<std::string, std::map<std::string, std::string>> rows;
+        while (std::getline(is, line))
+        {
+            const std::vector<std::string> f(split(line));
+            std::map<std::string, std::string> r;
+            for (size_t i = 0; i < header.size() && i < f.size(); ++i)
+            {
+                r[header[i]] = f[i];
+            }
+            rows[r["name"]] = r;
+        }
+        return rows;
+    }
+}
+
+
+TEST(stabilityMap, quickFormHasNoSilentFailure)
+{
+    const fileName dir = sphTest::copyTutorial("stability", "stability");
+    std::string out;
+    EXPECT_EQ
+    (
+        sphTest::runWithBashrc(dir + "/Allclean && " + dir + "/Allrun -quick", out),
+        0
+    ) << out;
+
+    const auto rows = readTable(dir/"results"/"stability.csv");
+    EXPECT_GE(rows.size(), 25u) << out;
+    for (const auto& [name, r] : rows)
+    {
+        EXPECT_NE(r.at("outcome"), "WRONG") << name << ": " << r.at("cause");
+        if (r.at("outcome") == "stopped")
+        {
+            EXPECT_FALSE(r.at("cause").empty()) << name;
+        }
+    }
+
+    ASSERT_TRUE(rows.count("hardSolve_isph")) << out;
+    EXPECT_EQ(rows.at("hardSolve_isph").at("outcome"), "stopped");
+    EXPECT_NE
+    (
+        rows.at("hardSolve_isph").at("cause").find("did not converge"),
+        std::string::npos
+    ) << rows.at("hardSolve_isph").at("cause");
+
+    ASSERT_TRUE(rows.count("hardSolveGoOn_isph"));
+    EXPECT_EQ(rows.at("hardSolveGoOn_isph").at("outcome"), "ran");
+
+    // retryOnFailure counts its retries, whether the run ends or stops
+    for (const char* retried : {"maxCo1Retry_wcsph", "largeStepRetry_isph"})
+    {
+        ASSERT_TRUE(rows.count(retried));
+        EXPECT_FALSE(rows.at(retried).at("retries").empty()) << retried;
+    }
+    // Without retries the ISPH large step stops where the check fires
+    ASSERT_TRUE(rows.count("largeStep_isph"));
+    EXPECT_EQ(rows.at("largeStep_isph").at("outcome"), "stopped");
+    EXPECT_NE
+    (
+        rows.at("largeStep_isph").at("cause").find("maxStepDisplacement"),
+        std::string::npos
+    );
+
+    // The still tanks that ran are still: hydrostatics within 5 % of rho g H
+    for (const char* tank : {"longRest_isph", "longRest_wcsph"})
+    {
+        ASSERT_TRUE(rows.count(tank));
+        ASSERT_EQ(rows.at(tank).at("outcome"), "ran") << tank;
+        EXPECT_LT(std::stod(rows.at(tank).at("error")), 0.05) << tank;
+    }
+}
+
+
+// ************************************************************************* //
