@@ -1,0 +1,132 @@
+"""The numbers and figures of Allreport's page (bin/tools/python/sphReport.py)
+from the rows of the tutorials' errors.csv files (errorTable.py): the
+observed orders and, per case, one PNG of error against wall-clock and CPU
+time with every method on the same axes.
+"""
+import math
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+# One colour and marker per method family, the same on every figure; a
+# variant (ISPH-USAW implicit, FV transient) takes its family's colour and
+# a dashed line
+STYLES = [("FV", "black", "s"), ("ISPH-USAW", "tab:red", "o"),
+          ("WCSPH-USAW", "tab:green", "D"), ("WCSPH", "tab:blue", "^")]
+MAX_PANELS = 4             # measures per figure: more make unreadable rows
+
+
+def style(method):
+    """(colour, marker, line style) of a method."""
+    for family, colour, marker in STYLES:
+        if method == family:
+            return colour, marker, "-"
+        if method.startswith(family):
+            return colour, marker, "--"
+    return "tab:purple", "v", ":"
+
+
+def finite(v):
+    return isinstance(v, float) and math.isfinite(v)
+
+
+def measures(rows):
+    """The case's error measures in the order they first appear."""
+    seen = []
+    for r in rows:
+        if r["measure"] not in seen:
+            seen.append(r["measure"])
+    return seen
+
+
+def methods(rows):
+    names = sorted({r["method"] for r in rows},
+                   key=lambda m: ([f for f, _, _ in STYLES].index(style_family(m)), m))
+    return names
+
+
+def style_family(method):
+    for family, _, _ in STYLES:
+        if method.startswith(family):
+            return family
+    return "FV"
+
+
+def slope(x, y):
+    """Least-squares slope of log y against log x; NaN with fewer than two
+    distinct positive points."""
+    pts = [(a, b) for a, b in zip(x, y) if finite(a) and finite(b) and a > 0 and b > 0]
+    if len({a for a, _ in pts}) < 2:
+        return float("nan")
+    lx, ly = np.log([a for a, _ in pts]), np.log([b for _, b in pts])
+    return float(np.polyfit(lx, ly, 1)[0])
+
+
+def orders(rows):
+    """[(measure, method, runs, order in the spacing, order in CPU time)]:
+    error ~ h^p with h ~ particles^(-1/2) (2-D), error ~ CPU^(-s)."""
+    out = []
+    for measure in measures(rows):
+        for method in methods(rows):
+            group = [r for r in rows if r["measure"] == measure and r["method"] == method
+                     and finite(r["value"])]
+            if not group:
+                continue
+            p = slope([math.sqrt(r["particles"]) if r["particles"] > 0 else float("nan")
+                       for r in group], [r["value"] for r in group])
+            s = slope([r["cpuSeconds"] for r in group], [r["value"] for r in group])
+            out.append((measure, method, len(group), -p, -s))
+    return out
+
+
+def _panel(ax, rows, measure, timeKey):
+    drawn = False
+    for method in methods(rows):
+        group = sorted((r for r in rows if r["measure"] == measure and r["method"] == method),
+                       key=lambda r: r["particles"])
+        colour, marker, line = style(method)
+        points = [r for r in group if finite(r["value"]) and r["value"] > 0
+                  and finite(r[timeKey]) and r[timeKey] > 0]
+        if points:
+            ax.loglog([r[timeKey] for r in points], [r["value"] for r in points],
+                      marker=marker, color=colour, ls=line, label=method)
+            for r in points:
+                ax.annotate(str(r["resolution"]), (r[timeKey], r["value"]), fontsize=6,
+                            xytext=(3, 3), textcoords="offset points", color=colour)
+            drawn = True
+        # A reference run (no error of its own): its run time as a line
+        for r in group:
+            if not finite(r["value"]) and finite(r[timeKey]) and r[timeKey] > 0:
+                ax.axvline(r[timeKey], color=colour, ls=":", lw=1,
+                           label="%s (reference) %s" % (method, r["resolution"]))
+                ax.set_xscale("log")
+                drawn = True
+    return drawn
+
+
+def plot_case(case, rows, path):
+    """The case's PNG: one row per measure (at most MAX_PANELS), error
+    against wall-clock seconds (left) and CPU seconds (right). Returns
+    the measures drawn."""
+    shown = measures(rows)[:MAX_PANELS]
+    fig, axes = plt.subplots(len(shown), 2, figsize=(10, 3.2 * len(shown)),
+                             squeeze=False)
+    for (axWall, axCpu), measure in zip(axes, shown):
+        for ax, key, label in ((axWall, "wallSeconds", "wall-clock time [s]"),
+                               (axCpu, "cpuSeconds", "CPU time [s]")):
+            if not _panel(ax, rows, measure, key):
+                ax.text(0.5, 0.5, "no run with both an error and a %s"
+                        % label.split(" [")[0], ha="center", va="center",
+                        transform=ax.transAxes, fontsize=8)
+            ax.set_xlabel(label)
+            ax.grid(alpha=0.3, which="both")
+        axWall.set_ylabel(measure if len(measure) < 40 else measure[:37] + "...",
+                          fontsize=8)
+        axWall.legend(fontsize=7)
+    fig.suptitle("%s: error against run time (labels: resolution)" % case, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+    return shown
