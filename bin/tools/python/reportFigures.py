@@ -121,12 +121,13 @@ def plot_case(case, rows, path):
                         % label.split(" [")[0], ha="center", va="center",
                         transform=ax.transAxes, fontsize=8)
             ax.set_xlabel(label)
+            ax.margins(0.12)            # no marker cut by the frame
             ax.grid(alpha=0.3, which="both")
         axWall.set_ylabel(measure if len(measure) < 40 else measure[:37] + "...",
                           fontsize=8)
         axWall.legend(fontsize=7)
     fig.suptitle("%s: error against run time (labels: resolution)" % case, fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=80)
+    fig.savefig(path, dpi=100)
     plt.close(fig)
     return shown

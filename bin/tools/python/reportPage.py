@@ -57,6 +57,11 @@ def e(text):
     return html.escape(str(text))
 
 
+def prose(text):
+    """Escaped text with its `commands` as <code>."""
+    return re.sub(r"`([^`]*)`", r"<code>\1</code>", e(text))
+
+
 def html_table(header, rows, numeric=()):
     out = ["<table><tr>" + "".join("<th>%s</th>" % e(h) for h in header) + "</tr>"]
     for row in rows:
@@ -67,7 +72,8 @@ def html_table(header, rows, numeric=()):
 
 
 def runs_rows(sections):
-    return [(s.case, r["action"], r["seconds"], os.path.relpath(r["folder"], PROJECT[0]), r["command"])
+    return [(s.case, r["action"], r["seconds"], r["cpuSeconds"],
+             os.path.relpath(r["folder"], PROJECT[0]), r["command"])
             for s in sections for r in s.runs]
 
 
@@ -78,7 +84,8 @@ def references(section):
 def section_html(s):
     out = ['<section id="case-%s"><h2>%s</h2>' % (slug(s.case), e(s.case))]
     out.append("<p><b>Runs:</b> %s</p>" % "; ".join(
-        "%s (%s, %s s)" % (e(os.path.relpath(r["folder"], PROJECT[0])), e(r["action"]), e(r["seconds"]))
+        "%s (%s, %s s, %s s CPU)" % (e(os.path.relpath(r["folder"], PROJECT[0])),
+                                     e(r["action"]), e(r["seconds"]), e(r["cpuSeconds"]))
         for r in s.runs))
     if s.rows:
         out.append("<p><b>Reference:</b> %s<br><b>Error measures:</b> %s</p>" % (
@@ -128,8 +135,8 @@ def write_html(a, sections, stabilityRows, benchmarks):
            + '<li><a href="#stability">stability map</a></li>'
            '<li><a href="#benchmarks">speed benchmarks</a></li></ul></nav>',
            "<h2>Runs</h2>",
-           html_table(("case", "action", "seconds", "folder", "command"), runs_rows(sections),
-                      numeric=(2,)),
+           html_table(("case", "action", "wall s", "CPU s", "folder", "command"),
+                      runs_rows(sections), numeric=(2, 3)),
            '<p>All rows in one table: <a href="errors.csv">errors.csv</a>; methods: FV '
            "(OpenFOAM), ISPH-USAW, WCSPH (dummy + repulsive walls), WCSPH-USAW.</p>"]
     out += [section_html(s) for s in sections]
@@ -138,13 +145,13 @@ def write_html(a, sections, stabilityRows, benchmarks):
         out.append("<p>tutorials/stability/results/stability.csv</p>")
         out.append(html_table(stabilityRows[0], stabilityRows[1:]))
     else:
-        out.append("<p>%s</p>" % e(HOW_TO_STABILITY))
+        out.append("<p>%s</p>" % prose(HOW_TO_STABILITY))
     out.append('</section><section id="benchmarks"><h2>Speed benchmarks</h2>')
     if benchmarks:
         for name, text in benchmarks:
             out.append("<h3>benchmarks/results/%s</h3><pre>%s</pre>" % (e(name), e(text)))
     else:
-        out.append("<p>%s</p>" % e(HOW_TO_BENCHMARK))
+        out.append("<p>%s</p>" % prose(HOW_TO_BENCHMARK))
     out.append("</section></body></html>")
     with open(os.path.join(a.out, "index.html"), "w") as f:
         f.write("\n".join(out) + "\n")
@@ -160,7 +167,7 @@ def md_table(header, rows):
 def write_markdown(a, sections, stabilityMd, benchmarks):
     now = datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC")
     out = ["# %s" % a.title, "", "Written %s by ./Allreport. %s" % (now, a.note), "",
-           "## Runs", "", md_table(("case", "action", "seconds", "folder", "command"),
+           "## Runs", "", md_table(("case", "action", "wall s", "CPU s", "folder", "command"),
                                    runs_rows(sections))]
     for s in sections:
         out += ["## %s" % s.case, ""]

@@ -6,7 +6,7 @@ tutorials' own pictures, the stability map and the speed benchmarks.
     sphReport.py -out DIR -runs RUNS.tsv [-project DIR] [-title T]
 
 RUNS.tsv (written by Allreport), one line per tutorial run or reused:
-    case  folder  action  seconds  command  log
+    case  folder  action  seconds  cpuSeconds  command  log
 (case: the report's section, e.g. hydrostaticTank for the three still
 tanks; folder: where its errors.csv and pictures are; action: ran, reused,
 failed or missing). Writes DIR/<case>.png, DIR/pictures/..., DIR/index.html,
@@ -46,7 +46,8 @@ def walk(folder):
 
 def read_runs(path):
     with open(path, newline="") as f:
-        return [dict(zip(("case", "folder", "action", "seconds", "command", "log"), row))
+        return [dict(zip(("case", "folder", "action", "seconds", "cpuSeconds", "command",
+                          "log"), row))
                 for row in csv.reader(f, delimiter="\t") if row and not row[0].startswith("#")]
 
 
