@@ -9,6 +9,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.ticker import FormatStrFormatter
 
 # One colour and marker per method family, the same on every figure; a
 # variant (ISPH-USAW implicit, FV transient) takes its family's colour and
@@ -33,10 +34,11 @@ def finite(v):
 
 
 def measures(rows):
-    """The case's error measures in the order they first appear."""
+    """The case's error measures in the order they first appear (those
+    with at least one error: not a reference's run time alone)."""
     seen = []
     for r in rows:
-        if r["measure"] not in seen:
+        if r["measure"] not in seen and finite(r["value"]):
             seen.append(r["measure"])
     return seen
 
@@ -122,9 +124,14 @@ def plot_case(case, rows, path):
                         transform=ax.transAxes, fontsize=8)
             ax.set_xlabel(label)
             ax.margins(0.12)            # no marker cut by the frame
+            # Short error labels, also on the minor ticks a narrow range shows
+            ax.yaxis.set_major_formatter(FormatStrFormatter("%.3g"))
+            ax.yaxis.set_minor_formatter(FormatStrFormatter("%.3g"))
             ax.grid(alpha=0.3, which="both")
-        axWall.set_ylabel(measure if len(measure) < 40 else measure[:37] + "...",
-                          fontsize=8)
+        against = sorted({r["reference"] for r in rows if r["measure"] == measure})
+        axWall.set_title("%s, against %s" % (measure, "; ".join(against)), fontsize=8,
+                         loc="left")
+        axWall.set_ylabel("error")
         axWall.legend(fontsize=7)
     fig.suptitle("%s: error against run time (labels: resolution)" % case, fontsize=10)
     fig.tight_layout()
