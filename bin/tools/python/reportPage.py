@@ -93,15 +93,16 @@ def section_html(s):
             "; ".join(e(m) for m in reportFiguresMeasures(s))))
         out.append('<img class="figure" src="%s" alt="%s: error against run time">'
                    % (e(s.png), e(s.case)))
-        if len(s.drawn) < len(reportFiguresMeasures(s)):
-            out.append("<p>The figure shows the first %d measures; the table has all.</p>"
-                       % len(s.drawn))
+        if len(s.drawn) < len(reportFigures.panels(s.rows)):
+            out.append("<p>The figure shows the first %d of %d measure and reference pairs; "
+                       "the tables have all.</p>" % (len(s.drawn),
+                                                     len(reportFigures.panels(s.rows))))
         out.append("<h3>Observed orders</h3><p>error ~ h<sup>p</sup> (h ~ particles or "
                    "cells<sup>-1/2</sup>) and error ~ CPU<sup>-s</sup>, least squares over "
                    "the runs of a method; - with fewer than two resolutions.</p>")
-        out.append(html_table(("measure", "method", "runs", "p", "s"),
-                              [(m, meth, n, fmt(p), fmt(q)) for m, meth, n, p, q in s.orders],
-                              numeric=(2, 3, 4)))
+        out.append(html_table(("measure", "against", "method", "runs", "p", "s"),
+                              [o[:4] + (fmt(o[4]), fmt(o[5])) for o in s.orders],
+                              numeric=(3, 4, 5)))
         out.append("<details><summary>All rows (errors.csv)</summary>")
         out.append(html_table(
             ("method", "resolution", "particles/cells", "measure", "value", "reference",
@@ -176,8 +177,8 @@ def write_markdown(a, sections, stabilityMd, benchmarks):
                     "Error measures: %s" % "; ".join(reportFiguresMeasures(s)), "",
                     "![%s: error against run time](%s)" % (s.case, s.png), "",
                     "Observed orders (error ~ h^p, error ~ CPU^-s):", "",
-                    md_table(("measure", "method", "runs", "p", "s"),
-                             [(m, meth, n, fmt(p), fmt(q)) for m, meth, n, p, q in s.orders]),
+                    md_table(("measure", "against", "method", "runs", "p", "s"),
+                             [o[:4] + (fmt(o[4]), fmt(o[5])) for o in s.orders]),
                     md_table(("method", "resolution", "particles/cells", "measure", "value",
                               "wall s", "CPU s"),
                              [(r["method"], r["resolution"], r["particles"], r["measure"],
