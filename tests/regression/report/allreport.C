@@ -15,6 +15,9 @@ Description
     Allreport (289 s CPU; fishPass 150 s, cavity 100 s), at a load of 6-9
     on the 2 cores; with the machine at a load of 15 the same runs took
     31 minutes and the time check fails.
+    A second test: errors.csv files with a wrong header, a value that is
+    not a number and a short row are each refused naming the file, the
+    line and what is wrong (1 s).
 
 \*---------------------------------------------------------------------------*/
 
@@ -125,4 +128,36 @@ TEST(allreport, quickFormWritesEveryCaseWithItsFigureInFifteenMinutes)
     );
     ASSERT_TRUE(isFile(out/"shot.png")) << shot;
     EXPECT_GT(fileSize(out/"shot.png"), 50000) << shot;
+}
+
+
+TEST(allreport, aBadErrorsCsvNamesTheFileLineAndEntry)
+{
+    // What a tutorial writes is read strictly: the report names the file,
+    // the line and the entry of a bad one instead of plotting nonsense
+    const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"allreportBadCsv";
+    rmDir(dir);
+    const std::string header =
+        "case,method,resolution,particles,measure,value,reference,wallSeconds,cpuSeconds\n";
+    sphTest::writeFile(dir/"header"/"errors.csv", "case,method,value\n");
+    sphTest::writeFile
+    (
+        dir/"value"/"errors.csv",
+        header + "cavity,FV,16,256,L2,0.01,Ghia,1,0.5\ncavity,FV,32,1024,L2,abc,Ghia,2,1\n"
+    );
+    sphTest::writeFile(dir/"fields"/"errors.csv", header + "cavity,FV,16,256,L2,0.01\n");
+    const std::string read =
+        std::string(SPHFOAM_PYTHON) + " -c \"import sys; sys.path.insert(0, '"
+      + SPHFOAM_SOURCE_DIR + "/bin/tools/python'); import errorTable; "
+        "errorTable.read_errors(sys.argv[1])\" ";
+    std::string out;
+    EXPECT_NE(sphTest::run(read + dir/"header"/"errors.csv" + " 2>&1", out), 0);
+    EXPECT_NE(out.find(dir/"header"/"errors.csv" + ": line 1: the header must be"),
+        std::string::npos) << out;
+    EXPECT_NE(sphTest::run(read + dir/"value"/"errors.csv" + " 2>&1", out), 0);
+    EXPECT_NE(out.find("errors.csv: line 3: value 'abc' is not a number"),
+        std::string::npos) << out;
+    EXPECT_NE(sphTest::run(read + dir/"fields"/"errors.csv" + " 2>&1", out), 0);
+    EXPECT_NE(out.find("errors.csv: line 2: 6 fields, expected 9"), std::string::npos)
+        << out;
 }
