@@ -1,0 +1,163 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    ./Allreport -quick as a user runs it, into the build folder: every
+    validation tutorial's test run (Allrun -test, or a short run) in a copy,
+    then report/index.html and summary.md. Asserted: the command ends well
+    within 15 minutes (the issue's budget on this 2-core machine), both
+    files exist, every case has its section and its PNG of error against
+    run time, every errors.csv the tutorials wrote parses (errorTable.py
+    reads it strictly: header, field count, numbers) and holds rows of its
+    own case, and the page names the stability map and the benchmarks.
+    When Debian's chromium is installed the page is opened headless and its
+    screenshot must be written. Measured: 656 s for the test, 619 s of it
+    Allreport (289 s CPU; fishPass 150 s, cavity 100 s), at a load of 6-9
+    on the 2 cores; with the machine at a load of 15 the same runs took
+    31 minutes and the time check fails.
+    A second test: errors.csv files with a wrong header, a value that is
+    not a number and a short row are each refused naming the file, the
+    line and what is wrong (1 s).
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "testCase.H"
+
+#include <chrono>
+
+using namespace Foam;
+
+namespace
+{
+
+// The report's sections (Allreport's table; the three still tanks share one)
+const std::vector<std::string> cases =
+{
+    "cavity", "damBreak/zhou", "damBreak/obstacle", "damBreak/wedge",
+    "periodic/poiseuille", "periodic/taylorGreen", "periodic/cylinderArray",
+    "turbulence/channel", "turbulence/fishPass", "heatTransfer/poiseuille",
+    "heatTransfer/heatedCavity", "hydrostaticTank", "weir/sharpCrested"
+};
+
+std::string slug(const std::string& name)
+{
+    std::string s;
+    for (const char c : name)
+    {
+        s += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    }
+    return s;
+}
+
+std::string readAll(const fileName& path)
+{
+    std::ifstream is(path);
+    return std::string(std::istreambuf_iterator<char>(is), {});
+}
+
+} // End anonymous namespace
+
+
+TEST(allreport, quickFormWritesEveryCaseWithItsFigureInFifteenMinutes)
+{
+    const fileName out = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"allreport";
+    rmDir(out);
+    std::string log;
+    const auto start = std::chrono::steady_clock::now();
+    const int status = sphTest::runWithBashrc
+    (
+        "./Allreport -quick -out " + out + " 2>&1", log
+    );
+    const double seconds = std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - start
+    ).count();
+    EXPECT_EQ(status, 0) << log;
+    EXPECT_LT(seconds, 900) << log;
+
+    const fileName page = out/"index.html";
+    ASSERT_TRUE(isFile(page)) << log;
+    ASSERT_TRUE(isFile(out/"summary.md")) << log;
+    const std::string html = readAll(page);
+    const std::string md = readAll(out/"summary.md");
+    for (const std::string& name : cases)
+    {
+        const std::string png = slug(name) + ".png";
+        EXPECT_NE(html.find("id=\"case-" + slug(name) + "\""), std::string::npos) << name;
+        EXPECT_NE(html.find("src=\"" + png + "\""), std::string::npos) << name;
+        EXPECT_TRUE(isFile(out/png)) << name;
+        EXPECT_GT(fileSize(out/png), 10000) << name;
+        EXPECT_NE(md.find("## " + name + "\n"), std::string::npos) << name;
+    }
+    EXPECT_NE(html.find("id=\"stability\""), std::string::npos);
+    EXPECT_NE(html.find("id=\"benchmarks\""), std::string::npos);
+
+    // Every errors.csv parses, strictly, and only names its own cases
+    std::string parsed;
+    const int parseStatus = sphTest::run
+    (
+        std::string(SPHFOAM_PYTHON) + " -c \"import sys, glob; sys.path.insert(0, '"
+      + SPHFOAM_SOURCE_DIR + "/bin/tools/python'); import errorTable\n"
+        "files = glob.glob('" + out + "/quick/**/errors.csv', recursive=True)\n"
+        "rows = [r for f in files for r in errorTable.read_errors(f)]\n"
+        "print(len(files), len(rows), len({r['case'] for r in rows}))\"",
+        parsed
+    );
+    ASSERT_EQ(parseStatus, 0) << parsed;
+    std::istringstream counts(parsed);
+    int nFiles = 0, nRows = 0, nCases = 0;
+    counts >> nFiles >> nRows >> nCases;
+    EXPECT_GE(nFiles, 15) << parsed;        // 15 tutorials, one file or more each
+    EXPECT_GE(nRows, 40) << parsed;
+    EXPECT_EQ(nCases, int(cases.size())) << parsed;
+
+    // The page as a reader sees it
+    if (sphTest::run("command -v chromium").empty())
+    {
+        GTEST_SKIP() << "no chromium: the screenshot is not taken";
+    }
+    std::string shot;
+    sphTest::run
+    (
+        "cd " + out + " && timeout 120 chromium --headless --no-sandbox --disable-gpu"
+        " --disable-background-networking --disable-component-update --disable-sync"
+        " --no-first-run --user-data-dir=$(mktemp -d) --screenshot=" + out/"shot.png"
+      + " --window-size=1400,4000 file://" + page + " 2>&1",
+        shot
+    );
+    ASSERT_TRUE(isFile(out/"shot.png")) << shot;
+    EXPECT_GT(fileSize(out/"shot.png"), 50000) << shot;
+}
+
+
+TEST(allreport, aBadErrorsCsvNamesTheFileLineAndEntry)
+{
+    // What a tutorial writes is read strictly: the report names the file,
+    // the line and the entry of a bad one instead of plotting nonsense
+    const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"allreportBadCsv";
+    rmDir(dir);
+    const std::string header =
+        "case,method,resolution,particles,measure,value,reference,wallSeconds,cpuSeconds\n";
+    sphTest::writeFile(dir/"header"/"errors.csv", "case,method,value\n");
+    sphTest::writeFile
+    (
+        dir/"value"/"errors.csv",
+        header + "cavity,FV,16,256,L2,0.01,Ghia,1,0.5\ncavity,FV,32,1024,L2,abc,Ghia,2,1\n"
+    );
+    sphTest::writeFile(dir/"fields"/"errors.csv", header + "cavity,FV,16,256,L2,0.01\n");
+    const std::string read =
+        std::string(SPHFOAM_PYTHON) + " -c \"import sys; sys.path.insert(0, '"
+      + SPHFOAM_SOURCE_DIR + "/bin/tools/python'); import errorTable; "
+        "errorTable.read_errors(sys.argv[1])\" ";
+    std::string out;
+    EXPECT_NE(sphTest::run(read + dir/"header"/"errors.csv" + " 2>&1", out), 0);
+    EXPECT_NE(out.find(dir/"header"/"errors.csv" + ": line 1: the header must be"),
+        std::string::npos) << out;
+    EXPECT_NE(sphTest::run(read + dir/"value"/"errors.csv" + " 2>&1", out), 0);
+    EXPECT_NE(out.find("errors.csv: line 3: value 'abc' is not a number"),
+        std::string::npos) << out;
+    EXPECT_NE(sphTest::run(read + dir/"fields"/"errors.csv" + " 2>&1", out), 0);
+    EXPECT_NE(out.find("errors.csv: line 2: 6 fields, expected 9"), std::string::npos)
+        << out;
+}
