@@ -38,7 +38,8 @@ const std::vector<std::string> cases =
     "cavity", "damBreak/zhou", "damBreak/obstacle", "damBreak/wedge",
     "periodic/poiseuille", "periodic/taylorGreen", "periodic/cylinderArray",
     "turbulence/channel", "turbulence/fishPass", "heatTransfer/poiseuille",
-    "heatTransfer/heatedCavity", "hydrostaticTank", "weir/sharpCrested"
+    "heatTransfer/heatedCavity", "heatTransfer/heatedLidCavity",
+    "hydrostaticTank", "weir/sharpCrested"
 };
 
 std::string slug(const std::string& name)
