@@ -169,6 +169,8 @@ void Foam::SPH::isph::addStages()
             << exit(FatalIOError);
     }
     freeSurface_ = hasFreeSurface(divRMax);
+    // Leroy et al. 2015 after eq. (17): confined, the dynamic pressure
+    work_->dynamicPressureGradient = !freeSurface_ && !renormalised;
     implicitViscosity_ = viscousSchemeNames.getOrDefault
     (
         "viscousScheme", schemes_, viscousScheme::explicitEuler

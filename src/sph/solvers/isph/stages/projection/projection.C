@@ -36,7 +36,15 @@ void Foam::SPH::projection::describe(Ostream& os) const
                    " renormalised; beyond 000_...)";
             break;
     }
-    os  << ", gravity " << work_.g;
+    if (work_.dynamicPressureGradient)
+    {
+        os  << " of the dynamic pressure p - rho g.x (confined; Leroy et"
+            << " al. 2015 eq. (17))";
+    }
+    else
+    {
+        os  << ", gravity " << work_.g;
+    }
 }
 
 
@@ -139,6 +147,22 @@ void Foam::SPH::projection::pressureGradient
 )
 {
     const scalarField& p = w.parts.field<scalar>("p");
+    if (w.dynamicPressureGradient)
+    {
+        // G{A} + rho g, so that u** + dt (g - G{p}/rho) is u** - dt G{A}/rho
+        const vector2DField& x = w.parts.positions();
+        scalarField A(p.size());
+        forAll(A, i)
+        {
+            A[i] = p[i] - w.rho0*(w.g & x[i]);
+        }
+        gradient(form, w.W, w.nbrs, w.usaw, w.V, w.R, A, gradP);
+        for (vector2D& gp : gradP)
+        {
+            gp += w.rho0*w.g;
+        }
+        return;
+    }
     gradient(form, w.W, w.nbrs, w.usaw, w.V, w.R, p, gradP);
     if (w.ghostSurface && form == gradientForm::renormalised)
     {
