@@ -81,7 +81,7 @@ TEST(lockExchangeTutorial, sphFrontFroudeNumberSymmetricAndNearHaertel)
               std::string::npos) << log.substr(0, 4000);
 
     // front.dat: method n cells cpu Uheavy FrHeavy Ulight FrLight FrErr
-    // X5 X10 X15 X20
+    // X5 X10 X15 X20 Fr5_20
     const std::vector<std::string> sph =
         sphTest::tableRow(dir/"results"/"front.dat", {"sph", "5"});
     const std::vector<std::string> fv =
