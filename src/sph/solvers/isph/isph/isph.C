@@ -37,14 +37,6 @@ Foam::SPH::isph::freeSurfaceModeNames
 });
 
 
-const Foam::Enum<Foam::SPH::isph::pressureGradientType>
-Foam::SPH::isph::pressureGradientTypeNames
-({
-    { pressureGradientType::antisymmetric, "antisymmetric" },
-    { pressureGradientType::renormalised, "renormalised" },
-});
-
-
 const Foam::Enum<Foam::SPH::isph::freeSurfaceConditionType>
 Foam::SPH::isph::freeSurfaceConditionNames
 ({
@@ -108,8 +100,10 @@ void Foam::SPH::isph::selectWallModel()
 }
 
 
-void Foam::SPH::isph::addPrediction(const bool renormalised)
+void Foam::SPH::isph::addPrediction(const projection::gradientForm gradient)
 {
+    const bool renormalised =
+        gradient == projection::gradientForm::renormalised;
     isphWork& w = *work_;
     const bool forces = !forces_.empty() || w.gPeriodic != vector2D::zero;
     if (implicitViscosity_)
@@ -123,7 +117,7 @@ void Foam::SPH::isph::addPrediction(const bool renormalised)
         (
             new implicitViscousPrediction
             (
-                w, solution_, forces || thermal_.valid(), renormalised
+                w, solution_, forces || thermal_.valid(), gradient
             )
         );
     }
@@ -139,11 +133,13 @@ void Foam::SPH::isph::addPrediction(const bool renormalised)
 
 void Foam::SPH::isph::addStages()
 {
-    const pressureGradientType gradient = pressureGradientTypeNames.getOrDefault
-    (
-        "pressureGradient", schemes_, pressureGradientType::renormalised
-    );
-    const bool renormalised = gradient == pressureGradientType::renormalised;
+    const projection::gradientForm gradient =
+        projection::gradientFormNames.getOrDefault
+        (
+            "pressureGradient", schemes_, projection::gradientForm::renormalised
+        );
+    const bool renormalised =
+        gradient == projection::gradientForm::renormalised;
 
     // 000_... after eq. (36): "calibrated ... 0.7 for the Wendland kernel"
     const bool shift = schemes_.getOrDefault<bool>("shifting", true);
@@ -173,6 +169,8 @@ void Foam::SPH::isph::addStages()
             << exit(FatalIOError);
     }
     freeSurface_ = hasFreeSurface(divRMax);
+    // Leroy et al. 2015 after eq. (17): confined, the dynamic pressure
+    work_->dynamicPressureGradient = !freeSurface_ && !renormalised;
     implicitViscosity_ = viscousSchemeNames.getOrDefault
     (
         "viscousScheme", schemes_, viscousScheme::explicitEuler
@@ -205,13 +203,13 @@ void Foam::SPH::isph::addStages()
             )
         );
     }
-    addPrediction(renormalised);
+    addPrediction(gradient);
     if (freeSurface_) stages_.add(new freeSurface(w, divRMax));
     pressure_ = &stages_.add
     (
         new pressurePoisson(w, runTime_, solution_, renormalised, freeSurface_)
     );
-    stages_.add(new projection(w, renormalised));
+    stages_.add(new projection(w, gradient));
     if (thermal_) addHeatTransfer();
     stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (34)"));
     if (moving) stages_.add(new moveWalls(w, runTime_, true));

@@ -7,7 +7,46 @@
 #include "kernelDispatch.H"
 #include "ghostSurface.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::SPH::projection::gradientForm>
+Foam::SPH::projection::gradientFormNames
+({
+    { gradientForm::antisymmetric, "antisymmetric" },
+    { gradientForm::symmetric, "symmetric" },
+    { gradientForm::renormalised, "renormalised" },
+});
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::projection::describe(Ostream& os) const
+{
+    os  << "eq. (32) with ";
+    switch (form_)
+    {
+        case gradientForm::antisymmetric:
+            os  << "G+{p} (5) (pressureGradient antisymmetric)";
+            break;
+        case gradientForm::symmetric:
+            os  << "G-{p} (8) (pressureGradient symmetric)";
+            break;
+        case gradientForm::renormalised:
+            os  << "G-{p} (8) renormalised by G-{r}^-1 (pressureGradient"
+                   " renormalised; beyond 000_...)";
+            break;
+    }
+    if (work_.dynamicPressureGradient)
+    {
+        os  << " of the dynamic pressure p - rho g.x (confined; Leroy et"
+            << " al. 2015 eq. (17))";
+    }
+    else
+    {
+        os  << ", gravity " << work_.g;
+    }
+}
+
 
 template<class Kernel>
 Foam::vector2D Foam::SPH::projection::ghostGradient
@@ -70,42 +109,81 @@ Foam::vector2D Foam::SPH::projection::ghostGradient
 
 
 
+void Foam::SPH::projection::gradient
+(
+    const gradientForm form,
+    const kernel& W,
+    const neighbourList& nbrs,
+    const usawWalls& usaw,
+    const scalarUList& V,
+    const UList<tensor2D>& R,
+    const scalarUList& p,
+    UList<vector2D>& gradP
+)
+{
+    dispatch(W, [&](const auto& K)
+    {
+        switch (form)
+        {
+            case gradientForm::antisymmetric:
+                usaw::gradPlus(K, nbrs, usaw, V, p, gradP);
+                break;
+            case gradientForm::symmetric:
+                usaw::gradMinus(K, nbrs, usaw, V, p, gradP);
+                break;
+            case gradientForm::renormalised:
+                usaw::gradMinus(K, nbrs, usaw, V, R, p, gradP);
+                break;
+        }
+    });
+}
+
+
 void Foam::SPH::projection::pressureGradient
 (
     const isphWork& w,
-    const bool renormalised,
+    const gradientForm form,
     UList<vector2D>& gradP
 )
 {
     const scalarField& p = w.parts.field<scalar>("p");
-    dispatch(w.W, [&](const auto& K)
+    if (w.dynamicPressureGradient)
     {
-        if (renormalised)
+        // G{A} + rho g, so that u** + dt (g - G{p}/rho) is u** - dt G{A}/rho
+        const vector2DField& x = w.parts.positions();
+        scalarField A(p.size());
+        forAll(A, i)
         {
-            usaw::gradMinus(K, w.nbrs, w.usaw, w.V, w.R, p, gradP);
-            if (w.ghostSurface)
+            A[i] = p[i] - w.rho0*(w.g & x[i]);
+        }
+        gradient(form, w.W, w.nbrs, w.usaw, w.V, w.R, A, gradP);
+        for (vector2D& gp : gradP)
+        {
+            gp += w.rho0*w.g;
+        }
+        return;
+    }
+    gradient(form, w.W, w.nbrs, w.usaw, w.V, w.R, p, gradP);
+    if (w.ghostSurface && form == gradientForm::renormalised)
+    {
+        dispatch(w.W, [&](const auto& K)
+        {
+            for (label i = 0; i < w.nFluid; ++i)
             {
-                for (label i = 0; i < w.nFluid; ++i)
+                if (w.surfaceNormal[i] != vector2D::zero)
                 {
-                    if (w.surfaceNormal[i] != vector2D::zero)
-                    {
-                        gradP[i] = ghostGradient(K, w, p, i);
-                    }
+                    gradP[i] = ghostGradient(K, w, p, i);
                 }
             }
-        }
-        else
-        {
-            usaw::gradPlus(K, w.nbrs, w.usaw, w.V, p, gradP);
-        }
-    });
+        });
+    }
 }
 
 
 void Foam::SPH::projection::execute(const scalar dt)
 {
     isphWork& w = work_;
-    pressureGradient(w, renormalised_, gradP_);
+    pressureGradient(w, form_, gradP_);
 
     vector2D* U = w.parts.field<vector2D>("U").data();
     const vector2D g = w.g;

@@ -31,7 +31,7 @@ void Foam::SPH::implicitViscousPrediction::setOldValues(const scalar dt)
 {
     isphWork& w = work_;
     const vector2DField& U = w.parts.field<vector2D>("U");
-    projection::pressureGradient(w, renormalised_, dtA_);
+    projection::pressureGradient(w, gradient_, dtA_);
     const vector2D g = w.g;
     const scalar rho0 = w.rho0;
     for (label i = 0; i < w.nFluid; ++i)
@@ -53,7 +53,7 @@ Foam::SPH::implicitViscousPrediction::implicitViscousPrediction
     isphWork& work,
     const dictionary& solution,
     const bool afterForces,
-    const bool renormalised
+    const projection::gradientForm gradient
 )
 :
     stage
@@ -76,7 +76,7 @@ Foam::SPH::implicitViscousPrediction::implicitViscousPrediction
         )
     ),
     afterForces_(afterForces),
-    renormalised_(renormalised),
+    gradient_(gradient),
     dtA_(work.parts.size()),
     step_(work.nbrs, work.usaw, work.V, work.nFluid),
     uOld_(work.parts.size()),
