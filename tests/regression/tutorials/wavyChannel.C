@@ -17,8 +17,7 @@ Description
     - SPH 12 against FV 24 on the six lines: max |dT| 1.7e-2, checked to
       4e-2; max |du|/U_b 3.8e-2, checked to 8e-2; max |dv|/U_b 5.6e-2,
       checked to 0.12; its bulk velocity -1.0 % off FV 24's, checked to
-      3 %. Without the buoyancy, or with the wedges' temperatures on the
-      wrong patches, T on the lines is off by 0.2-0.5 and fails.
+      3 %.
 
 \*---------------------------------------------------------------------------*/
 
