@@ -415,11 +415,8 @@ void Foam::SPH::timeLoop::run()
     solver_.stages().print(Info);
     solver_.printSettings();
     Info<< "    checks              NaN/Inf in any field, particles leaving"
-        << " the domain"
-        << (
-               solver_.cloud().dom().anyOpen()
-             ? " (its open sides bound nothing: crossings are logged)" : ""
-           )
+        << " the domain" << (solver_.cloud().dom().anyOpen()
+            ? " (its open sides bound nothing: crossings are logged)" : "")
         << (solver_.crossing() ? " or crossing a wall" : "")
         << ", " << displacement_.describe().c_str()
         << (solver_.physicalChecks().empty() ? "" : ", ")
