@@ -4,8 +4,9 @@
 Description
     SPH::domain: wrap() exact inside and at the seam (x = max, x = min -
     1e-17, -0.0, several periods out), minimum-image separation and image,
-    the escape check in the non-periodic directions only, construction from
-    sphMeshDict's periodic entry and its errors, constant/sphMesh/domain
+    the escape check in the non-periodic directions only and open sides
+    (openSides) that bound nothing, construction from sphMeshDict's
+    periodic and openSides entries and their errors, constant/sphMesh/domain
     written and read back, and the reductions.
 
     Tolerances: a wrap by k periods costs about k ulp of the coordinate
@@ -352,6 +353,101 @@ TEST(domain, writtenToConstantSphMeshAndReadBack)
     const SPH::domain flat(*runTime, wallsMin, wallsMax);
     EXPECT_FALSE(flat.anyPeriodic());
     EXPECT_EQ(flat.max(), vector2D(1, 1));
+}
+
+
+TEST(domain, anOpenSideBoundsNothing)
+{
+    // The wheel's channel: periodic in x, open above (yMax)
+    const SPH::domain dom
+    (
+        vector2D(0, 0), vector2D(4, 2.9), {true, false},
+        {false, false, false, true}
+    );
+    EXPECT_TRUE(dom.anyOpen());
+    EXPECT_EQ(dom.openSideNames(), wordList({"yMax"}));
+    EXPECT_TRUE(dom.contains(vector2D(1, 2.9)));
+    EXPECT_TRUE(dom.contains(vector2D(1, 2.9 + 1e-12)));   // beyond yMax: inside
+    EXPECT_TRUE(dom.contains(vector2D(1, 1e6)));
+    EXPECT_FALSE(dom.contains(vector2D(1, -1e-12)));       // yMin is closed
+    EXPECT_FALSE(dom.contains(vector2D(1, std::numeric_limits<scalar>::quiet_NaN())));
+    EXPECT_FALSE(dom.contains(vector2D(1, std::numeric_limits<scalar>::infinity())));
+
+    EXPECT_EQ(dom.beyondOpenSide(vector2D(1, 2.9)), -1);
+    EXPECT_EQ(dom.beyondOpenSide(vector2D(1, 3)), 3);
+    EXPECT_EQ(dom.beyondOpenSide(vector2D(1, -3)), -1);    // closed: not "open"
+    EXPECT_EQ(word(SPH::domain::sideNames[3]), "yMax");
+
+    // grown() keeps the sides open; a box without open sides has none
+    const SPH::domain g(dom.grown(0.5));
+    EXPECT_EQ(g.openSides(), dom.openSides());
+    EXPECT_EQ(g.beyondOpenSide(vector2D(1, 3)), -1);
+    EXPECT_EQ(g.beyondOpenSide(vector2D(1, 3.5)), 3);
+    EXPECT_FALSE(channel().anyOpen());
+    EXPECT_EQ(channel().beyondOpenSide(vector2D(0.5, 9)), -1);
+}
+
+
+TEST(domain, readsOpenSidesFromSphMeshDictAndWritesThem)
+{
+    sphTest::throwOnFatal();
+    const SPH::domain one
+    (
+        sphTest::dict
+        (
+            "periodic { directions (x); min (0 0); max (1 1); } openSides yMax;"
+        ),
+        wallsMin, wallsMax
+    );
+    EXPECT_EQ(one.openSideNames(), wordList({"yMax"}));
+
+    const SPH::domain two
+    (
+        sphTest::dict("openSides (xMax yMax);"), wallsMin, wallsMax
+    );
+    EXPECT_EQ(two.openSideNames(), wordList({"xMax", "yMax"}));
+    EXPECT_TRUE(two.contains(vector2D(99, 99)));
+    EXPECT_FALSE(two.contains(vector2D(-99, 0.1)));
+
+    const SPH::domain none(sphTest::dict("dr 0.1;"), wallsMin, wallsMax);
+    EXPECT_FALSE(none.anyOpen());
+
+    // constant/sphMesh/domain carries them to the solvers
+    const fileName dir = sphTest::makeCase("domainOpenSides");
+    auto runTime = sphTest::makeTime(dir);
+    one.write(*runTime);
+    const SPH::domain back(*runTime, vector2D(-9, -9), vector2D(9, 9));
+    EXPECT_EQ(back.openSides(), one.openSides());
+    EXPECT_TRUE(back.periodic(0));
+}
+
+
+TEST(domain, badOpenSidesAreFatalIOErrorsNamingTheEntry)
+{
+    sphTest::throwOnFatal();
+    auto message = [](const std::string& text)
+    {
+        try
+        {
+            SPH::domain(sphTest::dict(text), wallsMin, wallsMax);
+        }
+        catch (const Foam::error& e)
+        {
+            return std::string(e.message());
+        }
+        return std::string();
+    };
+
+    const std::string top(message("openSides (top);"));
+    EXPECT_NE(top.find("Unknown side 'top' in entry 'openSides'"), std::string::npos) << top;
+    EXPECT_NE(top.find("xMin, xMax, yMin and yMax"), std::string::npos) << top;
+
+    const std::string seam
+    (
+        message("periodic { directions (x); min (0 0); max (1 1); } openSides (xMax);")
+    );
+    EXPECT_NE(seam.find("periodic direction x"), std::string::npos) << seam;
+    EXPECT_NE(seam.find("'openSides'"), std::string::npos) << seam;
 }
 
 

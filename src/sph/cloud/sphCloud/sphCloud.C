@@ -75,7 +75,7 @@ Foam::SPH::domain Foam::SPH::sphCloud::solverDomain
             hi[d] = wallsDomain.max()[d];
         }
     }
-    return domain(lo, hi, wallsDomain.periodic());
+    return domain(lo, hi, wallsDomain.periodic(), wallsDomain.openSides());
 }
 
 

@@ -15,6 +15,9 @@ const Foam::word Foam::SPH::domain::dictName("domain");
 
 const char* const Foam::SPH::domain::axisNames[2] = {"x", "y"};
 
+const char* const Foam::SPH::domain::sideNames[4] =
+    {"xMin", "xMax", "yMin", "yMax"};
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -119,20 +122,79 @@ Foam::FixedList<bool, 2> Foam::SPH::domain::readDirections
 }
 
 
+void Foam::SPH::domain::readOpenSides(const dictionary& dict)
+{
+    open_ = false;
+    if (!dict.found("openSides"))
+    {
+        return;
+    }
+    // One word (openSides yMax;) or a list of them (openSides (yMax);)
+    const ITstream& is = dict.lookup("openSides");
+    const wordList names
+    (
+        is.size() == 1 && is[0].isWord()
+      ? wordList(1, is[0].wordToken())
+      : dict.get<wordList>("openSides")
+    );
+    for (const word& w : names)
+    {
+        label side = -1;
+        for (label k = 0; k < 4; ++k)
+        {
+            if (w == sideNames[k]) side = k;
+        }
+        if (side < 0)
+        {
+            FatalIOErrorInFunction(dict.lookup("openSides"))
+                << "Unknown side '" << w << "' in entry 'openSides'; valid"
+                << " sides are xMin, xMax, yMin and yMax (the box's sides,"
+                << " e.g. 'openSides (yMax);' for nothing above the water)"
+                << nl << exit(FatalIOError);
+        }
+        if (periodic_[side/2])
+        {
+            FatalIOErrorInFunction(dict.lookup("openSides"))
+                << "Side '" << w << "' in entry 'openSides' is a side of the"
+                << " periodic direction " << axisNames[side/2] << ", which"
+                << " has no outside; open only sides of a direction that is"
+                << " not periodic" << nl << exit(FatalIOError);
+        }
+        open_[side] = true;
+    }
+}
+
+
+Foam::wordList Foam::SPH::domain::openSideNames() const
+{
+    wordList names;
+    for (label k = 0; k < 4; ++k)
+    {
+        if (open_[k])
+        {
+            names.append(word(sideNames[k]));
+        }
+    }
+    return names;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::SPH::domain::domain
 (
     const vector2D& min,
     const vector2D& max,
-    const FixedList<bool, 2>& periodic
+    const FixedList<bool, 2>& periodic,
+    const FixedList<bool, 4>& open
 )
 :
     min_(min),
     max_(max),
     periodic_(periodic),
     period_(Zero),
-    halfPeriod_(VGREAT, VGREAT)
+    halfPeriod_(VGREAT, VGREAT),
+    open_(open)
 {
     setPeriods();
 }
@@ -157,6 +219,7 @@ Foam::SPH::domain::domain
                 << "    periodic { directions (x); min (0 0); max (1 1); }"
                 << nl << exit(FatalIOError);
         }
+        readOpenSides(dict);
         return;
     }
 
@@ -180,6 +243,7 @@ Foam::SPH::domain::domain
         max_[d] = hi[d];
     }
     setPeriods();
+    readOpenSides(dict);
 }
 
 
@@ -202,6 +266,7 @@ Foam::SPH::domain::domain
     min_ = dict.get<vector2D>("min");
     max_ = dict.get<vector2D>("max");
     setPeriods();
+    readOpenSides(dict);
 }
 
 
@@ -271,6 +336,16 @@ Foam::scalar Foam::SPH::domain::gMin(const UList<scalar>& f) const
 
 void Foam::SPH::domain::report(Ostream& os) const
 {
+    if (anyOpen())
+    {
+        os  << "Domain: open sides (nothing bounds them; a fluid particle"
+            << " beyond one is logged):";
+        for (const word& w : openSideNames())
+        {
+            os  << ' ' << w;
+        }
+        os  << nl;
+    }
     if (!anyPeriodic())
     {
         os  << "Domain: not periodic, box " << min_ << " to " << max_ << nl;
@@ -317,6 +392,17 @@ void Foam::SPH::domain::write
     dict.merge(dictionary(IStringStream(text.str())()));
     dict.add("min", min_);
     dict.add("max", max_);
+    if (anyOpen())
+    {
+        OStringStream sides;
+        sides<< "openSides (";
+        for (const word& w : openSideNames())
+        {
+            sides<< ' ' << w;
+        }
+        sides<< " );";
+        dict.merge(dictionary(IStringStream(sides.str())()));
+    }
 
     // A small text file whatever the case's writeFormat
     dict.regIOobject::writeObject

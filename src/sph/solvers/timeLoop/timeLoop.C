@@ -200,7 +200,10 @@ Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
     {
         if (!cloud.contains(x[i]))
         {
-            what = "Left the domain (the walls' box with a margin):";
+            what =
+                "Left the domain (the walls' box with a margin; a side"
+                " with nothing beyond it can be opened: openSides in"
+                " system/sphMeshDict):";
             return i;
         }
     }
@@ -373,6 +376,7 @@ void Foam::SPH::timeLoop::step()
         fail(what, bad, true);
     }
     solver_.afterStep(runTime_.deltaTValue());
+    openSides_.check(solver_.cloud(), start_.positions, runTime_);
 }
 
 
@@ -411,7 +415,9 @@ void Foam::SPH::timeLoop::run()
     solver_.stages().print(Info);
     solver_.printSettings();
     Info<< "    checks              NaN/Inf in any field, particles leaving"
-        << " the domain" << (solver_.crossing() ? " or crossing a wall" : "")
+        << " the domain" << (solver_.cloud().dom().anyOpen()
+            ? " (its open sides bound nothing: crossings are logged)" : "")
+        << (solver_.crossing() ? " or crossing a wall" : "")
         << ", " << displacement_.describe().c_str()
         << (solver_.physicalChecks().empty() ? "" : ", ")
         << solver_.physicalChecks().c_str()
@@ -471,6 +477,7 @@ void Foam::SPH::timeLoop::run()
     }
 
     displacement_.printSummary(Info);
+    openSides_.printSummary(solver_.cloud(), Info);
     if (maxRetries_ > 0)
     {
         Info<< "Steps retried with half the time step (retryOnFailure "

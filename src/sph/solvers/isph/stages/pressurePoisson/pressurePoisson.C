@@ -241,7 +241,8 @@ Foam::SPH::pressurePoisson::pressurePoisson
     latticeSum_(0),
     ghostSp_(work.ghostSurface ? work.parts.size() : 0, Zero),
     pMin_(-VGREAT),
-    nAtPMin_(0)
+    nAtPMin_(0),
+    nReleased_(0)
 {
     if (work.ghostSurface)
     {
@@ -315,7 +316,13 @@ void Foam::SPH::pressurePoisson::describe(Ostream& os) const
     {
         os  << nl << indent.c_str() << "the liquid holds no pressure below"
             << " pMin " << pMin_ << " Pa (it separates from a wall"
-            << " instead of pulling on it)";
+            << " instead of pulling on it";
+        if (work_.ghostSurface)
+        {
+            os  << "; a free-surface particle below it is released at"
+                << " p = 0";
+        }
+        os  << ")";
     }
     os  << nl << indent.c_str()
         << (
@@ -352,6 +359,7 @@ void Foam::SPH::pressurePoisson::execute(const scalar dt)
     // below it are held there and the system solved again (a few passes:
     // each can pull others below)
     nAtPMin_ = 0;
+    nReleased_ = 0;
     for (label pass = 0; pass < 4 && pMin_ > -VGREAT; ++pass)
     {
         const label nNew = holdAtPMin();

@@ -168,13 +168,30 @@ Foam::label Foam::SPH::pressurePoisson::holdAtPMin()
     label n = 0;
     for (label i = 0; i < w.nFluid; ++i)
     {
-        if (kind[i] == laplacianMatrix::interior && p[i] < pMin_)
+        if (kind[i] != laplacianMatrix::interior || !(p[i] < pMin_))
         {
-            // A = s f with s = -rho: p = pMin
-            kind[i] = laplacianMatrix::dirichlet;
-            f[i] = (w.g & x[i]) - pMin_/w.rho0;
-            ++n;
+            continue;
         }
+
+        // A free-surface row (ghost values beyond it) borders the air: it
+        // separates at the air's pressure, 0, as the paper's free-surface
+        // particles, and its gradient is its real neighbours'. Held at
+        // pMin, its ghosts (p rising from pMin to 0 over delta = dr/2)
+        // pulled it into the liquid at |pMin|/(rho delta), 250 m/s^2 at
+        // pMin -5000 Pa and dr = 0.04 m: a lone particle at a water wheel's
+        // paddle tip, sucked after the rising tip, left it at 4.7 m/s
+        const bool surfaceRow =
+            w.ghostSurface && w.surfaceNormal[i] != vector2D::zero;
+
+        // A = s f with s = -rho: p = pMin, or 0
+        kind[i] = laplacianMatrix::dirichlet;
+        f[i] = (w.g & x[i]) - (surfaceRow ? scalar(0) : pMin_)/w.rho0;
+        if (surfaceRow)
+        {
+            w.surfaceNormal[i] = Zero;
+            ++nReleased_;
+        }
+        ++n;
     }
     return n;
 }
