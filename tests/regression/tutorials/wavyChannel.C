@@ -29,34 +29,7 @@ Description
 #include <gtest/gtest.h>
 #include "testCase.H"
 
-#include <fstream>
-#include <sstream>
-
 using namespace Foam;
-
-namespace
-{
-    //- The words of the first row of file whose first two words are key
-    std::vector<std::string> rowOf
-    (
-        const fileName& file,
-        const std::string& method,
-        const std::string& n
-    )
-    {
-        std::ifstream is(file);
-        std::string line;
-        while (std::getline(is, line))
-        {
-            std::istringstream ls(line);
-            std::vector<std::string> w;
-            std::string s;
-            while (ls >> s) w.push_back(s);
-            if (w.size() > 2 && w[0] == method && w[1] == n) return w;
-        }
-        return {};
-    }
-}
 
 
 TEST(wavyChannelTutorial, sphProfilesAndBulkVelocityAgainstFv)
@@ -71,8 +44,8 @@ TEST(wavyChannelTutorial, sphProfilesAndBulkVelocityAgainstFv)
 
     // method n points cpu clock t_end U_b Re errT errU errV L2T L2U
     const fileName table = dir/"runs"/"test"/"results"/"wavyChannel.dat";
-    const std::vector<std::string> fv = rowOf(table, "FV", "24");
-    const std::vector<std::string> sph = rowOf(table, "SPH", "12");
+    const std::vector<std::string> fv = sphTest::tableRow(table, {"FV", "24"});
+    const std::vector<std::string> sph = sphTest::tableRow(table, {"SPH", "12"});
     ASSERT_EQ(fv.size(), 13u) << out;
     ASSERT_EQ(sph.size(), 13u) << out;
 
