@@ -23,11 +23,14 @@ Usage
 #include "argList.H"
 #include "isph.H"
 #include "solverMain.H"
+#include "openMPWaitPolicy.H"
 
 using namespace Foam;
 
 int main(int argc, char *argv[])
 {
+    SPH::waitPassivelyByDefault(argv);
+
     argList::addNote
     (
         "Incompressible SPH with unified semi-analytical wall boundary"

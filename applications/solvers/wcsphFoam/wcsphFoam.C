@@ -20,11 +20,14 @@ Usage
 #include "argList.H"
 #include "wcsph.H"
 #include "solverMain.H"
+#include "openMPWaitPolicy.H"
 
 using namespace Foam;
 
 int main(int argc, char *argv[])
 {
+    SPH::waitPassivelyByDefault(argv);
+
     argList::addNote
     (
         "Weakly compressible SPH with dummy + repulsive wall particles"
