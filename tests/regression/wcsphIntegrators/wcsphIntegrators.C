@@ -18,6 +18,7 @@ Description
 #include "particles.H"
 
 #include <cmath>
+#include <iostream>
 #include <fstream>
 #include <sstream>
 
@@ -57,9 +58,8 @@ namespace
     )
     {
         const fileName dir = base + "_" + scheme + "_" + std::to_string(label(1e6*dt));
-        rmDir(dir);
         std::string out;
-        run("cp -r " + base + " " + dir, out);
+        run("rm -rf " + dir + " && cp -r " + base + " " + dir, out);
         sphTest::setEntry(dir/"system"/"controlDict", "deltaT", std::to_string(dt));
         sphTest::setEntry(dir/"system"/"controlDict", "endTime", endTime);
         sphTest::setEntry(dir/"system"/"controlDict", "writeInterval", endTime);
@@ -80,6 +80,13 @@ namespace
             }
         }
         return U;
+    }
+
+    std::string show(const scalarList& values)
+    {
+        std::ostringstream os;
+        for (const scalar v : values) os << v << ' ';
+        return os.str();
     }
 
     scalar rmsDifference(const List<vector2D>& a, const List<vector2D>& b)
@@ -185,15 +192,17 @@ TEST(wcsphIntegrators, symplecticAndLeapfrogAreSecondOrderInTime)
         {
             errors.append(rmsDifference(zhouVelocities(base, scheme, dt, T), reference));
         }
+        std::cout << scheme << ": RMS velocity errors [m/s] at dt = 4e-4, 2e-4, 1e-4: "
+            << show(errors) << std::endl;
         for (label k = 0; k < 2; ++k)
         {
             const scalar order = std::log2(errors[k]/errors[k + 1]);
-            EXPECT_GT(order, 1.6) << scheme << ": errors " << errors;
-            EXPECT_LT(order, 2.6) << scheme << ": errors " << errors;
+            EXPECT_GT(order, 1.6) << scheme << ": errors " << show(errors);
+            EXPECT_LT(order, 2.6) << scheme << ": errors " << show(errors);
         }
         // The finest step is already close: well below the speeds of the
         // collapse (g t = 0.4 m/s)
-        EXPECT_LT(errors[2], 1e-3) << scheme << ": errors " << errors;
+        EXPECT_LT(errors[2], 1e-3) << scheme << ": errors " << show(errors);
     }
 }
 
@@ -221,7 +230,9 @@ TEST(wcsphIntegrators, leapfrogRestartIsExactToTheBit)
 {
     // The leapfrog's predictor reuses the last step's rates except after a
     // write: a run restarted from a write must be the run straight through
+    // (binary writes: an ascii restart reads rounded values back)
     const fileName dir = sphTest::tankCase("wcsph", sphTest::perTest("restart"), "0.02");
+    sphTest::setEntry(dir/"system"/"controlDict", "writeFormat", "binary");
     appendTo(dir/"system"/"sphSchemes", "timeScheme leapfrog;");
     sphTest::expectExactRestart("wcsphFoam", dir, "0.02", "0.01");
 }
