@@ -7,7 +7,8 @@ Description
     predictor-corrector and its leapfrog form are second order in time on
     the first instants of the Zhou dam-break (against Runge-Kutta 4 at an
     eighth of the step), keep still water at rest as Runge-Kutta 4 does,
-    restart exactly, and an unknown timeScheme is a clear error.
+    restart exactly; an unknown timeScheme and moving walls with the new
+    schemes are clear errors.
 
 \*---------------------------------------------------------------------------*/
 
@@ -164,6 +165,24 @@ TEST(wcsphIntegrators, unknownTimeSchemeIsAFatalIOErrorListingTheValidWords)
     EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 1) << out;
     for (const char* word :
         {"timeScheme", "verlet", "sphSchemes", "RungeKutta4", "symplectic", "leapfrog"})
+    {
+        EXPECT_NE(out.find(word), std::string::npos) << word << " not in" << nl << out;
+    }
+}
+
+
+TEST(wcsphIntegrators, movingWallsWithSymplecticAreAClearError)
+{
+    // The wall model places moving walls at the time of the last rate
+    // evaluation (t^{n+1/2} for the symplectic schemes): not supported yet
+    const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/sphTest::perTest("box");
+    std::string out;
+    run("rm -rf " + dir + " && mkdir -p " + dir.path() + " && cp -r "
+        + std::string(SPHFOAM_SOURCE_DIR) + "/tests/regression/wcsphFoam/movingBox " + dir, out);
+    ASSERT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
+    appendTo(dir/"system"/"sphSchemes", "timeScheme symplectic;");
+    EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 1) << sphTest::logTail(out);
+    for (const char* word : {"timeScheme symplectic", "sphSchemes", "RungeKutta4 only"})
     {
         EXPECT_NE(out.find(word), std::string::npos) << word << " not in" << nl << out;
     }
