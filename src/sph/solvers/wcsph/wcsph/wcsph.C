@@ -32,15 +32,6 @@ Foam::SPH::wcsph::viscosityModelNames
 });
 
 
-const Foam::Enum<Foam::SPH::wcsph::timeIntegrator>
-Foam::SPH::wcsph::timeIntegratorNames
-({
-    { timeIntegrator::RungeKutta4, "RungeKutta4" },
-    { timeIntegrator::symplectic, "symplectic" },
-    { timeIntegrator::leapfrog, "leapfrog" },
-});
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::SPH::wcsph::readPhysics()
@@ -113,32 +104,6 @@ void Foam::SPH::wcsph::readSchemes()
         "a length in h; 0: rebuild the neighbour list at every stage"
     );
     readTimeScheme();
-}
-
-
-std::string Foam::SPH::wcsph::timeSchemeWords()
-{
-    std::string words;
-    for (const word& w : timeIntegratorNames.names())
-    {
-        words += (words.empty() ? "" : " | ") + w;
-    }
-    return words;
-}
-
-
-void Foam::SPH::wcsph::readTimeScheme()
-{
-    const word scheme =
-        schemes_.getOrDefault<word>("timeScheme", "RungeKutta4");
-    if (!timeIntegratorNames.found(scheme))
-    {
-        FatalIOErrorInFunction(schemes_)
-            << "Unknown timeScheme '" << scheme << "' in "
-            << schemes_.objectPath() << ": expected one of "
-            << timeSchemeWords().c_str() << exit(FatalIOError);
-    }
-    timeScheme_ = timeIntegratorNames[scheme];
 }
 
 
@@ -344,55 +309,6 @@ void Foam::SPH::wcsph::addStages()
 }
 
 
-void Foam::SPH::wcsph::addIntegratorStage(const std::string& rates)
-{
-    const wordList state({"positions", "U", "rho"});
-    if (timeScheme_ == timeIntegrator::RungeKutta4)
-    {
-        stages_.add
-        (
-            new memberStage<wcsph>
-            (
-                "rungeKutta4", state, state,
-                "classical Runge-Kutta, eq. (14); at each of its four stages:\n"
-              + rates, *this, &wcsph::rungeKutta4, "Runge-Kutta 4"
-            )
-        );
-        return;
-    }
-    if (wallModel_->movesGeometry())
-    {
-        FatalIOErrorInFunction(schemes_)
-            << "timeScheme " << timeIntegratorNames[timeScheme_] << " in "
-            << schemes_.objectPath() << ": walls that move are supported by"
-            << " timeScheme RungeKutta4 only (the wall model places them at"
-            << " the time of the last rate evaluation)" << exit(FatalIOError);
-    }
-    const bool symplectic = timeScheme_ == timeIntegrator::symplectic;
-    const std::string description =
-        std::string
-        (
-            symplectic
-          ? "symplectic predictor-corrector (Monaghan 2005, DualSPHysics):"
-            " rates at t^n and t^{n+1/2}, "
-          : "leapfrog (position Verlet): the predictor from the last step's"
-            " rates, "
-        )
-      + "density rho^n (2 - eps)/(2 + eps); at each rate evaluation:\n"
-      + rates;
-    stages_.add
-    (
-        new memberStage<wcsph>
-        (
-            symplectic ? "symplectic" : "leapfrog", state, state,
-            description, *this,
-            symplectic ? &wcsph::symplectic : &wcsph::leapfrog,
-            symplectic ? "symplectic" : "leapfrog"
-        )
-    );
-}
-
-
 void Foam::SPH::wcsph::printSettings() const
 {
     if (!crossing_)
@@ -407,8 +323,8 @@ void Foam::SPH::wcsph::printSettings() const
             << turbulence_->description().c_str() << nl;
     }
     Info<< "    time scheme         " << timeIntegratorNames[timeScheme_]
-        << " (timeScheme " << timeSchemeWords().c_str() << ")" << nl;
-    Info<< "    time step           eq. (15), C_n = maxCo "
+        << " (timeScheme " << timeSchemeWords().c_str() << ")" << nl
+        << "    time step           eq. (15), C_n = maxCo "
         << runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2)
         << (runTime_.controlDict().getOrDefault<bool>("adjustTimeStep", false)
             ? "" : " (adjustTimeStep off: deltaT fixed)")
@@ -475,7 +391,6 @@ void Foam::SPH::wcsph::saveState(const particles::snapshot& start)
 
 void Foam::SPH::wcsph::restoreState()
 {
-    // The rates of the failed step are not those of the state put back
     ratesCurrent_ = false;
     midStepRates_ = false;
     if (bodyForces_) bodyForces_->restore();
@@ -539,8 +454,7 @@ void Foam::SPH::wcsph::printTimes() const
     const scalar total = timeNeighbours_ + timeInteractions_ + timeIntegration_;
     if (total > 0)
     {
-        Info<< "Within the " << timeIntegratorNames[timeScheme_]
-            << " steps: neighbour search " << timeNeighbours_ << " s ("
+        Info<< "Within the steps: neighbour search " << timeNeighbours_ << " s ("
             << label(100*timeNeighbours_/total + 0.5) << "%), interactions "
             << timeInteractions_ << " s (" << label(100*timeInteractions_/total + 0.5)
             << "%), integration " << timeIntegration_ << " s ("

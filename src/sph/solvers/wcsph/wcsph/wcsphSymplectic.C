@@ -6,10 +6,10 @@ Description
     Runge-Kutta of wcsphRates.C (timeScheme in system/sphSchemes):
 
     symplectic (two rate evaluations per step): the predictor-corrector
-    form of the symplectic position Verlet (Monaghan 2005, Rep. Prog.
-    Phys. 68, section 8 "time stepping"; Parshikov et al. 2000; the
-    scheme DualSPHysics calls Symplectic, Dominguez et al. 2022, CPM 9,
-    eqs. (29)-(31)). With the rates a^n = dU/dt, R^n = drho/dt at the
+    form of the symplectic position Verlet (Leimkuhler, Reich & Skeel
+    1996; Monaghan 2005, Rep. Prog. Phys. 68, its time-stepping section),
+    the scheme DualSPHysics calls Symplectic (Dominguez et al. 2022, Comp.
+    Part. Mech. 9). With the rates a^n = dU/dt, R^n = drho/dt at the
     start of the step (those the time step was chosen from):
 
         predictor  x^{n+1/2} = x^n + dt/2 U^n
@@ -41,7 +41,17 @@ Description
     evaluations) at the first step of a run, after a write (a restart
     from there does the same, so the two runs agree) and after a
     rolled-back step. The time step of the leapfrog is chosen from the
-    extremes of the last evaluation (t^{n-1/2}).
+    extremes of the last evaluation (t^{n-1/2}). The stages after the
+    update (wall bounce, shifting, turbulence) change the state those
+    rates describe: by a bounce or a shift, small against a step.
+
+    Neither scheme damps: an oscillation the rates do not damp keeps its
+    energy, where Runge-Kutta 4 damps it at omega dt ~ 1. In the Zhou
+    dam-break a lone particle trapped at the ceiling (the repulsion and
+    the dummies' pressure) oscillates with a growing amplitude until its
+    density leaves densityBounds; artificialViscosity 0.01 (Monaghan's
+    alpha, the value DualSPHysics uses) keeps it quiet
+    (tutorials/damBreak/zhou/README.md).
 
     Both: the time step is 004_... eq. (15), dt = C_n h/max(c, |U|) with
     C_n = maxCo of controlDict, bounded by the viscous and force limits
