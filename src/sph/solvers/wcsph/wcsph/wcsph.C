@@ -103,6 +103,7 @@ void Foam::SPH::wcsph::readSchemes()
         schemes_, "neighbourSkin", 0.2, {0, VGREAT},
         "a length in h; 0: rebuild the neighbour list at every stage"
     );
+    readTimeScheme();
 }
 
 
@@ -136,6 +137,9 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     minWallDistance_(0),
     nHeld_(0),
     ratesCurrent_(false),
+    timeScheme_(timeIntegrator::RungeKutta4),
+    midStepRates_(false),
+    nRateEvaluations_(0),
     timeNeighbours_(0), timeInteractions_(0), timeIntegration_(0),
     nSteps_(0),
     maxSpeed_(0), maxAccel_(0), maxSoundSpeed_(0)
@@ -229,7 +233,6 @@ void Foam::SPH::wcsph::addStages()
     OStringStream rates;
     const char* indent = "        ";
     rates
-        << "classical Runge-Kutta, eq. (14); at each of its four stages:" << nl
         << indent << "neighbours         cell-linked list, " << neighbourPolicy().c_str()
         << nl;
     wallModel_->describe(rates, indent);
@@ -243,14 +246,7 @@ void Foam::SPH::wcsph::addStages()
     std::string description(rates.str());
     description.pop_back();
 
-    stages_.add
-    (
-        new memberStage<wcsph>
-        (
-            "rungeKutta4", {"positions", "U", "rho"}, {"positions", "U", "rho"},
-            description, *this, &wcsph::rungeKutta4, "Runge-Kutta 4"
-        )
-    );
+    addIntegratorStage(description);
     if (crossing_)
     {
         stages_.add
@@ -326,7 +322,9 @@ void Foam::SPH::wcsph::printSettings() const
         Info<< "    turbulence          "
             << turbulence_->description().c_str() << nl;
     }
-    Info<< "    time step           eq. (15), C_n = maxCo "
+    Info<< "    time scheme         " << timeIntegratorNames[timeScheme_]
+        << " (timeScheme " << timeSchemeWords().c_str() << ")" << nl
+        << "    time step           eq. (15), C_n = maxCo "
         << runTime_.controlDict().getOrDefault<scalar>("maxCo", 0.2)
         << (runTime_.controlDict().getOrDefault<bool>("adjustTimeStep", false)
             ? "" : " (adjustTimeStep off: deltaT fixed)")
@@ -336,8 +334,9 @@ void Foam::SPH::wcsph::printSettings() const
 
 Foam::scalar Foam::SPH::wcsph::maxDeltaT() const
 {
-    // The rates of the state are those of the coming step's first stage
-    if (!ratesCurrent_)
+    // The rates of the state are those of the coming step's first stage;
+    // the leapfrog's step is chosen from its last evaluation, at t^{n-1/2}
+    if (!ratesCurrent_ && !midStepRates_)
     {
         const_cast<wcsph&>(*this).computeRates(runTime_.value());
     }
@@ -379,6 +378,7 @@ void Foam::SPH::wcsph::afterStep(const scalar dt)
     if (runTime_.writeTime())
     {
         listBuilt_ = false;
+        midStepRates_ = false;
     }
 }
 
@@ -391,6 +391,8 @@ void Foam::SPH::wcsph::saveState(const particles::snapshot& start)
 
 void Foam::SPH::wcsph::restoreState()
 {
+    ratesCurrent_ = false;
+    midStepRates_ = false;
     if (bodyForces_) bodyForces_->restore();
 }
 
@@ -452,13 +454,14 @@ void Foam::SPH::wcsph::printTimes() const
     const scalar total = timeNeighbours_ + timeInteractions_ + timeIntegration_;
     if (total > 0)
     {
-        Info<< "Within the Runge-Kutta stages: neighbour search " << timeNeighbours_ << " s ("
+        Info<< "Within the steps: neighbour search " << timeNeighbours_ << " s ("
             << label(100*timeNeighbours_/total + 0.5) << "%), interactions "
             << timeInteractions_ << " s (" << label(100*timeInteractions_/total + 0.5)
             << "%), integration " << timeIntegration_ << " s ("
             << label(100*timeIntegration_/total + 0.5) << "%)" << nl
             << "Neighbour lists: " << nListBuilds_ << " built, "
-            << nListRefreshes_ << " refreshed" << nl;
+            << nListRefreshes_ << " refreshed" << nl
+            << "Rate (force) evaluations " << nRateEvaluations_ << nl;
     }
     if (nSteps_ > 0 && stages_.seconds() > 0)
     {

@@ -75,6 +75,7 @@ void Foam::SPH::wcsph::computeRates(const scalar t)
     }
     rateExtremes();
     ratesCurrent_ = true;
+    ++nRateEvaluations_;
     timeInteractions_ += std::chrono::duration<scalar>(clock::now() - searched).count();
 }
 
