@@ -9,6 +9,7 @@
 #include "fluidProperties.H"
 #include "uniformDimensionedFields.H"
 #include "Time.H"
+#include "IOdictionary.H"
 #include <cmath>
 
 // * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
@@ -188,8 +189,28 @@ Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
     rho_(fluidProperties(runTime).rho0),
     g_(fluidProperties(runTime).g),
     ghRef_(0),
+    removeMean_(false),
     nut_(nullptr)
 {
+    // Eq. (43) of Leroy et al. 2015: sphSchemes' meanBuoyancy
+    const IOdictionary schemes
+    (
+        IOobject
+        (
+            "sphSchemes", runTime.system(), runTime,
+            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+        )
+    );
+    const word mean = schemes.getOrDefault<word>("meanBuoyancy", "keep");
+    if (mean != "keep" && mean != "remove")
+    {
+        FatalIOErrorInFunction(schemes)
+            << "Entry meanBuoyancy " << mean << ": expected keep (the"
+            << " default) or remove (the fluid's mean of the Boussinesq force"
+            << " taken off, Leroy et al. 2015, eq. (43))" << exit(FatalIOError);
+    }
+    removeMean_ = (mean == "remove");
+
     // OpenFOAM's readhRef.H and gh.H: hRef optional, 0 without the file
     const uniformDimensionedScalarField hRef
     (
@@ -204,7 +225,9 @@ Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
 
     Info<< "Heat transfer (0/T): beta " << props_.beta << ", TRef "
         << props_.TRef << ", Pr " << props_.Pr << ", Prt " << props_.Prt
-        << ", K = nu/Pr " << props_.K << ", hRef " << hRef.value() << nl;
+        << ", K = nu/Pr " << props_.K << ", hRef " << hRef.value()
+        << (removeMean_ ? ", the fluid's mean force removed (eq. (43))" : "")
+        << nl;
     parts_.add<scalar>("T");
     parts_.add<scalar>("p_rgh");
 }
@@ -277,18 +300,42 @@ void Foam::SPH::heatTransfer::addBuoyancy
     {
         vertexValues(K, w.nbrs, w.usaw, w.V, w.nFluid, walls_, T);
     });
+    // Eq. (43): -g beta (<T>_F - T0), <T>_F the fluid's volume mean
+    vector2D mean = vector2D::zero;
+    if (removeMean_ && w.nFluid > 0)
+    {
+        scalar VT = 0, V = 0;
+        for (label i = 0; i < w.nFluid; ++i)
+        {
+            VT += w.V[i]*T[i];
+            V += w.V[i];
+        }
+        mean = buoyancy(g_, props_.beta, VT/V, props_.TRef);
+    }
     const label n = vertices ? T.size() : w.nFluid;
     for (label i = 0; i < n; ++i)
     {
-        Ustar[i] += dt*buoyancy(g_, props_.beta, T[i], props_.TRef);
+        Ustar[i] += dt*(buoyancy(g_, props_.beta, T[i], props_.TRef) - mean);
     }
     const List<labelPair>& ends = w.usaw.segmentParticles();
     wallForce.setSize(ends.size());
     forAll(ends, s)
     {
         const scalar Ts = 0.5*(T[ends[s].first()] + T[ends[s].second()]);
-        wallForce[s] = buoyancy(g_, props_.beta, Ts, props_.TRef);
+        wallForce[s] = buoyancy(g_, props_.beta, Ts, props_.TRef) - mean;
     }
+}
+
+
+Foam::SPH::buoyantTurbulence
+Foam::SPH::heatTransfer::turbulenceTerms() const
+{
+    buoyantTurbulence terms;
+    terms.beta = props_.beta;
+    terms.Prt = props_.Prt;
+    terms.g = g_;
+    terms.T = &parts_.field<scalar>("T");
+    return terms;
 }
 
 

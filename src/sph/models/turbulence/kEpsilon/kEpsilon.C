@@ -59,6 +59,34 @@ Foam::scalar Foam::SPH::kEpsilon::production
 }
 
 
+Foam::Pair<Foam::scalar> Foam::SPH::kEpsilon::step
+(
+    const scalar k,
+    const scalar eps,
+    const scalar P,
+    const scalar Lk,
+    const scalar Leps,
+    const buoyantSource& G,
+    const scalar C1,
+    const scalar C2,
+    const scalar dt
+)
+{
+    // (13): (k' - k)/dt = P + G - eps k'/k + L_k, G = G_explicit - r k'
+    const scalar rate = eps/k;
+    const scalar kNew =
+        (k + dt*(P + G.explicitPart + Lk))/(1 + dt*(rate + G.implicitRate));
+
+    // (14): (eps' - eps)/dt = eps/k (C1 P + C_eps3 G - C2 eps') + L_eps;
+    // C_eps3 = 1 only where G <= 0: -(r k'/k) eps', implicit as the
+    // destruction of k (a production has C_eps3 = 0)
+    const scalar buoyantRate = G.Ceps3*G.implicitRate*max(kNew, scalar(0))/k;
+    const scalar epsNew =
+        (eps + dt*(rate*C1*P + Leps))/(1 + dt*(C2*rate + buoyantRate));
+    return Pair<scalar>(kNew, epsNew);
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::SPH::kEpsilon::readInitial(const word& name)
@@ -129,6 +157,20 @@ void Foam::SPH::kEpsilon::sources(const Kernel& K)
         P_[i] = production(k[i], nut[i], gradU_[i], Cmu_, linearProduction_);
     }
 
+    // Leroy et al. 2015, eqs. (3), (16) and C_eps3 of (1), from G-{T} (8)
+    if (buoyancy_.T)
+    {
+        usaw::gradMinus(K, w.nbrs, w.usaw, w.V, *buoyancy_.T, gradT_);
+        for (label i = 0; i < w.nFluid; ++i)
+        {
+            G_[i] = buoyantProduction
+            (
+                buoyancy_.beta, Cmu_, buoyancy_.Prt, k[i], eps[i], gradT_[i],
+                buoyancy_.g
+            );
+        }
+    }
+
     // Eqs. (25) and (27), with B = nu + nu_T/sigma
     forAll(Dk_, i)
     {
@@ -150,14 +192,15 @@ void Foam::SPH::kEpsilon::advance(const scalar dt)
     scalarField& eps = parts_.field<scalar>("epsilon");
     for (label i = 0; i < work_->nFluid; ++i)
     {
-        // (18): (k' - k)/dt = P - eps k'/k + L_k; (19) alike for epsilon
-        const scalar rate = eps[i]/k[i];
-        const scalar kNum = k[i] + dt*(P_[i] + Lk_[i]);
-        const scalar epsNum = eps[i] + dt*(rate*C1_*P_[i] + Leps_[i]);
-        if (!(kNum > 0)) nonPositive("k", i, kNum/(1 + dt*rate));
-        if (!(epsNum > 0)) nonPositive("epsilon", i, epsNum/(1 + dt*C2_*rate));
-        k[i] = kNum/(1 + dt*rate);
-        eps[i] = epsNum/(1 + dt*C2_*rate);
+        // (18)-(19); with the buoyant terms (13)-(14)
+        const Pair<scalar> next = step
+        (
+            k[i], eps[i], P_[i], Lk_[i], Leps_[i], G_[i], C1_, C2_, dt
+        );
+        if (!(next.first() > 0)) nonPositive("k", i, next.first());
+        if (!(next.second() > 0)) nonPositive("epsilon", i, next.second());
+        k[i] = next.first();
+        eps[i] = next.second();
     }
 }
 
@@ -261,6 +304,8 @@ void Foam::SPH::kEpsilon::connect
     Dk_.setSize(n, Zero);
     Deps_.setSize(n, Zero);
     noFlux_.setSize(ends.size(), Zero);
+    // No buoyant terms until connectBuoyancy: G = 0, C_eps3 irrelevant
+    G_.setSize(n, buoyantSource{0, 0, 0, 0});
 
     // A restart keeps the nu_T it wrote: the step's viscous term takes
     // nu_T of the k and epsilon before the last correct(), so that one
@@ -278,6 +323,16 @@ void Foam::SPH::kEpsilon::connect
 const Foam::scalarField* Foam::SPH::kEpsilon::nut() const
 {
     return &parts_.field<scalar>("nut");
+}
+
+
+void Foam::SPH::kEpsilon::connectBuoyancy(const buoyantTurbulence& terms)
+{
+    buoyancy_ = terms;
+    gradT_.setSize(parts_.size(), Zero);
+    Info<< "kEpsilon: buoyant production G = beta nu_T/Prt grad T . g"
+        << " (Leroy et al. 2015, eqs. (3), (16)), beta " << terms.beta
+        << ", Prt " << terms.Prt << ", g " << terms.g << nl;
 }
 
 
@@ -315,7 +370,8 @@ Foam::string Foam::SPH::kEpsilon::description() const
     return
         "k-epsilon, eqs. (18)-(21), (25)-(29); nu_T (14) in the viscous term"
         " (22) with the log law (23), kappa " + Foam::name(wallLaw_.kappa())
-      + ", B " + Foam::name(wallLaw_.B());
+      + ", B " + Foam::name(wallLaw_.B())
+      + (buoyancy_.T ? "; buoyant G (Leroy et al. 2015, (13)-(16))" : "");
 }
 
 

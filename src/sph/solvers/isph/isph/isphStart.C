@@ -149,7 +149,12 @@ void Foam::SPH::isph::buildCloud()
     (
         new isphWork
         (
-            fluid.rho0, fluid.nu, fluid.g, *cloud_, nbrs_, *usaw_, *motion_
+            fluid.rho0, fluid.nu,
+            // With a 0/T, as buoyantBoussinesq*Foam's periodic p_rgh: no
+            // gravity along a period, only the Boussinesq force (Leroy et
+            // al. 2015, eq. (17)); a fluid at TRef is at rest there
+            thermal_ ? cloud_->dom().acrossPeriods(fluid.g) : fluid.g,
+            *cloud_, nbrs_, *usaw_, *motion_
         )
     );
 

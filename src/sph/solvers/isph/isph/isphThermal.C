@@ -25,6 +25,8 @@ void Foam::SPH::isph::connectThermal()
         {w.W, w.nbrs, w.usaw, w.V, w.nu, w.nFluid, dr_, w.motion.any()},
         *walls_, fresh_, turbulence_->nut()
     );
+    // Leroy et al. 2015, eqs. (3), (16): G in k-epsilon (laminar: nothing)
+    turbulence_->connectBuoyancy(thermal_->turbulenceTerms());
     // Leroy et al. 2015 after eq. (18): T corrected by the shift as u
     w.shiftedScalars.append("T");
 }
