@@ -140,6 +140,18 @@ void Foam::SPH::isph::buildCloud()
         )
     );
     forces_.checkDomain(cloud_->dom());
+    verlet_.reset
+    (
+        new verletList
+        (
+            checkedScalar
+            (
+                schemes_, "neighbourSkin", 0, {0, VGREAT},
+                "Verlet skin in h: neighbours listed within support + skin,"
+                " searched again when a particle has moved skin/2"
+            )*kernel_->h()
+        )
+    );
     usaw_.reset(new usawWalls(*walls_, *kernel_, nFluid_));
     if (!motion_->movesGeometry())
     {
@@ -149,7 +161,8 @@ void Foam::SPH::isph::buildCloud()
     (
         new isphWork
         (
-            fluid.rho0, fluid.nu, fluid.g, *cloud_, nbrs_, *usaw_, *motion_
+            fluid.rho0, fluid.nu, fluid.g, *cloud_, nbrs_, *verlet_, *usaw_,
+            *motion_
         )
     );
 
