@@ -6,6 +6,7 @@
 
 #include <cctype>
 #include <chrono>
+#include <ctime>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -46,20 +47,31 @@ Foam::SPH::stage::stage
     reads_(reads),
     writes_(writes),
     seconds_(0),
-    calls_(0)
+    calls_(0),
+    cpuSeconds_(0)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::SPH::stage::processCpuSeconds()
+{
+    timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return t.tv_sec + 1e-9*t.tv_nsec;
+}
+
+
 void Foam::SPH::stage::run(const scalar dt)
 {
+    const scalar cpuStart = processCpuSeconds();
     const auto start = std::chrono::steady_clock::now();
     execute(dt);
     seconds_ += std::chrono::duration<scalar>
     (
         std::chrono::steady_clock::now() - start
     ).count();
+    cpuSeconds_ += processCpuSeconds() - cpuStart;
     ++calls_;
 }
 

@@ -71,8 +71,10 @@ bool Foam::SPH::isph::hasFreeSurface(const scalar divRMax)
     }
 
     // A confined flow fills its walls: D{r} is near 2 everywhere
-    work_->cloud.updateCells();
-    nbrs_.build(cloud_->cells(), parts_.positions(), kernel_->support(), true);
+    verlet_->update
+    (
+        cloud_->cells(), parts_.positions(), kernel_->support(), nbrs_
+    );
     usaw_->update(parts_.positions());
     return freeSurface::countSurface(*work_, divRMax) > 0;
 }
@@ -400,7 +402,12 @@ void Foam::SPH::isph::afterStep(const scalar dt)
     ++nSteps_;
 
     // The cell list that function objects search: the final positions
-    cloud_->updateCells();
+    // (none to search without function objects; the neighbour stages
+    // keep their own list up to date)
+    if (runTime_.functionObjects().size())
+    {
+        cloud_->updateCells();
+    }
 }
 
 
@@ -467,6 +474,60 @@ void Foam::SPH::isph::write() const
 }
 
 
+void Foam::SPH::isph::printCpuSplit() const
+{
+    // The split of issue 17: neighbours (pairs; the walls' gamma apart),
+    // operators, matrix assembly, pressure solve, other (drifts, walls'
+    // motion, wall distance)
+    scalar pairs = 0, walls = 0, operators = 0, assembly = 0, solve = 0;
+    scalar other = 0;
+    for (const stage& s : stages_)
+    {
+        const scalar cpu = s.cpuSeconds();
+        if (const auto* nb = dynamic_cast<const usawNeighbours*>(&s))
+        {
+            walls += nb->wallCpuSeconds();
+            pairs += cpu - nb->wallCpuSeconds();
+        }
+        else if (&s == pressure_)
+        {
+            solve += pressure_->solveCpuSeconds();
+            assembly += cpu - pressure_->solveCpuSeconds();
+        }
+        else if
+        (
+            s.name() == "halfDrift" || s.name() == "moveWalls"
+         || s.name() == "wallDistance"
+        )
+        {
+            other += cpu;
+        }
+        else
+        {
+            operators += cpu;
+        }
+    }
+    const scalar total = pairs + walls + operators + assembly + solve + other;
+    if (!(total > 0)) return;
+    auto part = [&](const char* name, const scalar t)
+    {
+        Info<< ' ' << name << ' ' << t << " s ("
+            << label(100*t/total + 0.5) << "%)";
+    };
+    Info<< "CPU time in the steps: " << total << " s:";
+    part("neighbours", pairs);
+    part("walls", walls);
+    part("operators", operators);
+    part("matrix assembly", assembly);
+    part("pressure solve", solve);
+    part("other", other);
+    Info<< nl << "Neighbour searches " << verlet_->nBuilds() << " in "
+        << nSteps_ << " steps (" << verlet_->nSelections()
+        << " selections from the Verlet list), particle-steps per CPU second "
+        << nFluid_*nSteps_/total << nl;
+}
+
+
 void Foam::SPH::isph::printTimes() const
 {
     const scalar total = stages_.seconds();
@@ -475,6 +536,7 @@ void Foam::SPH::isph::printTimes() const
         return;
     }
     stages_.printTimes(Info);
+    printCpuSplit();
     Info<< "Steps " << nSteps_ << ", pressure solver iterations per step "
         << scalar(pressure_->nIterations())/nSteps_
         << ", particle-steps per second " << nFluid_*nSteps_/total << nl;

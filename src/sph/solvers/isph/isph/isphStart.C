@@ -140,6 +140,18 @@ void Foam::SPH::isph::buildCloud()
         )
     );
     forces_.checkDomain(cloud_->dom());
+    verlet_.reset
+    (
+        new verletList
+        (
+            checkedScalar
+            (
+                schemes_, "neighbourSkin", 0, {0, VGREAT},
+                "Verlet skin in h: neighbours listed within support + skin,"
+                " searched again when a particle has moved skin/2"
+            )*kernel_->h()
+        )
+    );
     usaw_.reset(new usawWalls(*walls_, *kernel_, nFluid_));
     if (!motion_->movesGeometry())
     {
@@ -154,7 +166,7 @@ void Foam::SPH::isph::buildCloud()
             // gravity along a period, only the Boussinesq force (Leroy et
             // al. 2015, eq. (17)); a fluid at TRef is at rest there
             thermal_ ? cloud_->dom().acrossPeriods(fluid.g) : fluid.g,
-            *cloud_, nbrs_, *usaw_, *motion_
+            *cloud_, nbrs_, *verlet_, *usaw_, *motion_
         )
     );
 

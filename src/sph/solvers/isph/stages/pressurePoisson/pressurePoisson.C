@@ -237,6 +237,7 @@ Foam::SPH::pressurePoisson::pressurePoisson
     vertexNeighbours_(work.cloud.walls().points().size()),
     laplacian_(work.nbrs, work.usaw, work.V, work.nFluid),
     nIterations_(0),
+    solveCpuSeconds_(0),
     nFloating_(0),
     latticeSum_(0),
     ghostSp_(work.ghostSurface ? work.parts.size() : 0, Zero),

@@ -210,7 +210,9 @@ void Foam::SPH::pressurePoisson::solve()
         xA_[i] = p[i] - w.rho0*(w.g & x[i]);
     }
 
+    const scalar cpuStart = processCpuSeconds();
     lastSolve_ = solver_->solve(laplacian_.matrix(), laplacian_.source(), xA_);
+    solveCpuSeconds_ += processCpuSeconds() - cpuStart;
     nIterations_ += lastSolve_.nIterations();
     setPressure();
 
