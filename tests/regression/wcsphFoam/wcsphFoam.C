@@ -11,6 +11,7 @@ Description
 #include <gtest/gtest.h>
 #include "testCase.H"
 #include "restartCheck.H"
+#include "probeSeries.H"
 #include "particles.H"
 #include "wallMesh.H"
 
@@ -127,16 +128,10 @@ TEST(wcsphFoam, hydrostaticTankStaysAtRestForTwoSeconds)
     EXPECT_LT(maxSpeed, 0.01*std::sqrt(g*H)) << "at t = " << tMaxSpeed;
 
     // The probe on the bottom wall at mid-tank, every step
-    std::ifstream probe(dir/"postProcessing"/"bottom"/"0"/"p");
     label nSteps = 0;
     scalar worst = 0, tWorst = 0;
-    std::string line;
-    while (std::getline(probe, line))
+    for (const auto& [t, p] : sphTest::probeSeries(dir/"postProcessing"/"bottom"/"0"/"p"))
     {
-        if (line.empty() || line[0] == '#') continue;
-        std::istringstream is(line);
-        scalar t, p;
-        is >> t >> p;
         ++nSteps;
         if (mag(p/(rho*g*H) - 1) > mag(worst))
         {

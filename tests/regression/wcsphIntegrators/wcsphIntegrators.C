@@ -16,6 +16,7 @@ Description
 #include "testCase.H"
 #include "restartCheck.H"
 #include "solverCase.H"
+#include "probeSeries.H"
 #include "particles.H"
 
 #include <cmath>
@@ -141,15 +142,9 @@ namespace
         }
         EXPECT_GE(nTimes, 10);
 
-        std::ifstream probe(dir/"postProcessing"/"bottom"/"0"/"p");
         scalar worst = 0;
-        std::string line;
-        while (std::getline(probe, line))
+        for (const auto& [t, p] : sphTest::probeSeries(dir/"postProcessing"/"bottom"/"0"/"p"))
         {
-            if (line.empty() || line[0] == '#') continue;
-            std::istringstream is(line);
-            scalar t, p;
-            is >> t >> p;
             worst = max(worst, mag(p/(rho*g*H) - 1));
         }
         return {maxSpeed/std::sqrt(g*H), worst};
