@@ -42,6 +42,7 @@ const std::vector<std::string> cases =
     "turbulence/channel", "turbulence/fishPass", "heatTransfer/poiseuille",
     "heatTransfer/heatedCavity", "heatTransfer/heatedLidCavity",
     "heatTransfer/lockExchange", "heatTransfer/wavyChannel",
+    "heatTransfer/turbulentChannel", "heatTransfer/tallCavity",
     "freeSurface/waterWheel", "hydrostaticTank", "weir/sharpCrested"
 };
 
