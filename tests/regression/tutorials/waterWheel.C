@@ -12,7 +12,8 @@ Description
     has dipped in (wallForces must measure the bucket where it has turned
     to: on the walls of t = 0 it stays dry and reads 0); and no fluid
     particle may be lost (the count of isolatedParticles at the first and
-    last write).
+    last write). compare's share of the water above the wheel's axis
+    must be there for both and below 5 % (the cups begin to lift water).
 
 \*---------------------------------------------------------------------------*/
 
@@ -49,6 +50,13 @@ TEST(waterWheelTutorial, bothSolversEndAndTheBucketFeelsTheWater)
             std::stod(table.at(solver + "_force_max_after_dip_N_per_m")), 100
         ) << solver;
 
+        // The cups have only begun to lift water at 0.5 s (compare reads
+        // it from the particles above the wheel's axis): present, small
+        const std::string above = solver + "_water_above_axis_0_to_4_s_max";
+        ASSERT_TRUE(table.count(above)) << solver << out;
+        EXPECT_GE(std::stod(table.at(above)), 0) << solver;
+        EXPECT_LT(std::stod(table.at(above)), 0.05) << solver;
+
         ASSERT_TRUE(table.count(solver + "_nFluid_last")) << solver << out;
         EXPECT_GT(std::stoi(table.at(solver + "_nFluid_first")), 1000) << solver;
         EXPECT_EQ
@@ -57,7 +65,7 @@ TEST(waterWheelTutorial, bothSolversEndAndTheBucketFeelsTheWater)
         ) << solver;
     }
 
-    for (const char* png : {"wheel_t0.png", "bucketForce.png"})
+    for (const char* png : {"wheel_t0.png", "bucketForce.png", "waterAboveAxis.png"})
     {
         EXPECT_TRUE(isFile(dir/png)) << png;
     }
