@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "neighbourList.H"
+#include "openMPThreshold.H"
 #include "error.H"
 
 #include <algorithm>
@@ -54,7 +55,7 @@ void Foam::SPH::neighbourList::count
     offsets_.resize(n + 1);
     label* __restrict__ off = offsets_.data();
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         const label self = (excludeSelf ? i : -1);
@@ -93,7 +94,7 @@ void Foam::SPH::neighbourList::fill
 
     // Same static schedule as the count pass: a thread revisits the cells it
     // has just read
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         const label self = (excludeSelf ? i : -1);
@@ -182,7 +183,7 @@ void Foam::SPH::neighbourList::fillSelected
     vector2D* __restrict__ rij = rij_.data();
     scalar* __restrict__ r = r_.data();
 
-    #pragma omp parallel
+    #pragma omp parallel if(SPH::worthThreads(n))
     {
         std::vector<pair> kept;
         #pragma omp for schedule(static)
@@ -293,7 +294,7 @@ void Foam::SPH::neighbourList::refresh
     vector2D* __restrict__ rij = rij_.data();
     scalar* __restrict__ r = r_.data();
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         const vector2D xi(cells.wrap(x[i]));
@@ -331,7 +332,7 @@ void Foam::SPH::neighbourList::select
     vector2D* __restrict__ xw = wrapped_.data();
     label* __restrict__ cell = cellOf_.data();
     const label nx = cells.nCellsXY()[0];
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         xw[i] = cells.wrap(x[i]);
@@ -353,7 +354,7 @@ void Foam::SPH::neighbourList::select
 
     offsets_.resize(n + 1);
     label* __restrict__ off = offsets_.data();
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         label c = 0;
