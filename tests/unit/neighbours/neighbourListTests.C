@@ -10,6 +10,7 @@ Description
 
 #include "neighbourTestTools.H"
 #include "neighbourList.H"
+#include "openMPThreshold.H"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -141,6 +142,8 @@ TEST_F(neighbourListTest, storedGeometryIsMinimumImageSeparation)
 
 TEST_F(neighbourListTest, sameArraysForOneAndTwoThreads)
 {
+    // Enough points for the loops to run on 2 threads (SPH::worthThreads)
+    pts_ = randomPoints(4*SPH::minParticlesPerThread, lo, hi);
     SPH::cellLinkedList cells(lo, hi, radius, {true, false});
     SPH::neighbourList one(true), two(true);
 
@@ -151,6 +154,7 @@ TEST_F(neighbourListTest, sameArraysForOneAndTwoThreads)
     const labelList sorted1(cells.sortedIndex());
 
     omp_set_num_threads(2);
+    ASSERT_TRUE(SPH::worthThreads(pts_.size()));
     cells.build(pts_);
     two.build(cells, pts_, radius, true);
     omp_set_num_threads(saved);

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wallCrossing.H"
+#include "openMPThreshold.H"
 
 namespace
 {
@@ -172,7 +173,8 @@ Foam::label Foam::SPH::wallCrossing::bounce
 {
     label nBounced = 0;
 
-    #pragma omp parallel for schedule(static) reduction(+: nBounced)
+    #pragma omp parallel for schedule(static) reduction(+: nBounced) \
+        if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         scalar t;

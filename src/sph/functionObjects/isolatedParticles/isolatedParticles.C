@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "isolatedParticles.H"
+#include "openMPThreshold.H"
 #include "checkedEntry.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -58,7 +59,8 @@ void Foam::SPH::functionObjects::isolatedParticles::measure()
 
     label nIsolated = 0;
     label nSparse = 0;
-    #pragma omp parallel for schedule(static) reduction(+:nIsolated, nSparse)
+    #pragma omp parallel for schedule(static) reduction(+:nIsolated, nSparse) \
+        if(SPH::worthThreads(nFluid))
     for (label a = 0; a < nFluid; ++a)
     {
         label nNear = 0;

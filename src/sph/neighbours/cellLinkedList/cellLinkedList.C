@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "cellLinkedList.H"
+#include "openMPThreshold.H"
 #include "error.H"
 
 #include <algorithm>
@@ -99,7 +100,7 @@ void Foam::SPH::cellLinkedList::assignCells(const UList<vector2D>& points)
     label nBad = 0;
 
     // The floating-point part of the sort: worth the threads
-    #pragma omp parallel for schedule(static) reduction(+:nBad)
+    #pragma omp parallel for schedule(static) reduction(+:nBad) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         nBad += !(std::isfinite(x[i].x()) && std::isfinite(x[i].y()));
@@ -159,7 +160,7 @@ void Foam::SPH::cellLinkedList::gatherPoints(const UList<vector2D>& points)
     const label* __restrict__ sorted = sortedIndex_.cdata();
     vector2D* __restrict__ sortedX = sortedPoints_.data();
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label k = 0; k < n; ++k)
     {
         sortedX[k] = wrap(x[sorted[k]]);

@@ -3,12 +3,14 @@
 \*---------------------------------------------------------------------------*/
 
 #include "neighbourList.H"
+#include "openMPThreshold.H"
 #include "error.H"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
+#include <omp.h>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -41,7 +43,8 @@ void Foam::SPH::neighbourList::check
 }
 
 
-void Foam::SPH::neighbourList::count
+template<bool StoreGeometry>
+void Foam::SPH::neighbourList::search
 (
     const cellLinkedList& cells,
     const UList<vector2D>& targets,
@@ -53,69 +56,91 @@ void Foam::SPH::neighbourList::count
     const vector2D* __restrict__ x = targets.cdata();
     offsets_.resize(n + 1);
     label* __restrict__ off = offsets_.data();
+    // Emptied, not freed: within the capacity of an earlier build the
+    // first thread's appends do not allocate
+    indices_.clear();
+    rij_.clear();
+    r_.clear();
 
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
+    #pragma omp parallel if(SPH::worthThreads(n))
     {
-        const label self = (excludeSelf ? i : -1);
-        label c = 0;
-        cells.forEachNeighbour
-        (
-            x[i],
-            radius,
-            [&](const label j, const vector2D&, const scalar)
-            {
-                c += (j != self);
-            }
-        );
-        off[i + 1] = c;
-    }
+        const label nThreads = omp_get_num_threads();
+        const label t = omp_get_thread_num();
+        #pragma omp single
+        threadPairs_.resize(nThreads);
 
-    prefixSum(n);
-}
-
-
-template<bool StoreGeometry>
-void Foam::SPH::neighbourList::fill
-(
-    const cellLinkedList& cells,
-    const UList<vector2D>& targets,
-    const scalar radius,
-    const bool excludeSelf
-)
-{
-    const label n = targets.size();
-    const vector2D* __restrict__ x = targets.cdata();
-    const label* __restrict__ off = offsets_.cdata();
-    label* __restrict__ idx = indices_.data();
-    vector2D* __restrict__ rij = rij_.data();
-    scalar* __restrict__ r = r_.data();
-
-    // Same static schedule as the count pass: a thread revisits the cells it
-    // has just read
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        const label self = (excludeSelf ? i : -1);
-        label k = off[i];
-        cells.forEachNeighbour
-        (
-            x[i],
-            radius,
-            [&](const label j, const vector2D& d, const scalar r2)
-            {
-                if (j != self)
+        // This thread's targets, in order; the first thread's pairs go in
+        // place, the others' into their own lists
+        const label first = n*t/nThreads;
+        const label end = n*(t + 1)/nThreads;
+        threadPairs& mine = threadPairs_[t];
+        mine.indices.clear();
+        mine.rij.clear();
+        mine.r.clear();
+        for (label i = first; i < end; ++i)
+        {
+            const label self = (excludeSelf ? i : -1);
+            label c = 0;
+            cells.forEachNeighbour
+            (
+                x[i],
+                radius,
+                [&](const label j, const vector2D& d, const scalar r2)
                 {
-                    idx[k] = j;
-                    if (StoreGeometry)
+                    if (j == self) return;
+                    ++c;
+                    if (t == 0)
                     {
-                        rij[k] = d;
-                        r[k] = std::sqrt(r2);
+                        indices_.append(j);
+                        if (StoreGeometry)
+                        {
+                            rij_.append(d);
+                            r_.append(std::sqrt(r2));
+                        }
                     }
-                    ++k;
+                    else
+                    {
+                        mine.indices.push_back(j);
+                        if (StoreGeometry)
+                        {
+                            mine.rij.push_back(d);
+                            mine.r.push_back(std::sqrt(r2));
+                        }
+                    }
                 }
+            );
+            off[i + 1] = c;
+        }
+
+        // Every count is in: the offsets, and room behind the first
+        // thread's pairs (resize keeps them) for the others'
+        #pragma omp barrier
+        #pragma omp single
+        {
+            prefixSum(n);
+            indices_.resize(offsets_.last());
+            if (StoreGeometry)
+            {
+                rij_.resize(offsets_.last());
+                r_.resize(offsets_.last());
             }
-        );
+        }
+        if (t > 0)
+        {
+            std::copy
+            (
+                mine.indices.begin(), mine.indices.end(),
+                indices_.begin() + off[first]
+            );
+            if (StoreGeometry)
+            {
+                std::copy
+                (
+                    mine.rij.begin(), mine.rij.end(), rij_.begin() + off[first]
+                );
+                std::copy(mine.r.begin(), mine.r.end(), r_.begin() + off[first]);
+            }
+        }
     }
 }
 
@@ -182,7 +207,7 @@ void Foam::SPH::neighbourList::fillSelected
     vector2D* __restrict__ rij = rij_.data();
     scalar* __restrict__ r = r_.data();
 
-    #pragma omp parallel
+    #pragma omp parallel if(SPH::worthThreads(n))
     {
         std::vector<pair> kept;
         #pragma omp for schedule(static)
@@ -251,20 +276,13 @@ void Foam::SPH::neighbourList::build
 )
 {
     check(cells, targets, radius, excludeSelf);
-    count(cells, targets, radius, excludeSelf);
-
-    // Within the capacity of an earlier build these do not allocate
-    const label nPairs = offsets_.last();
-    indices_.resize(nPairs);
     if (storeGeometry_)
     {
-        rij_.resize(nPairs);
-        r_.resize(nPairs);
-        fill<true>(cells, targets, radius, excludeSelf);
+        search<true>(cells, targets, radius, excludeSelf);
     }
     else
     {
-        fill<false>(cells, targets, radius, excludeSelf);
+        search<false>(cells, targets, radius, excludeSelf);
     }
 }
 
@@ -293,7 +311,7 @@ void Foam::SPH::neighbourList::refresh
     vector2D* __restrict__ rij = rij_.data();
     scalar* __restrict__ r = r_.data();
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         const vector2D xi(cells.wrap(x[i]));
@@ -331,7 +349,7 @@ void Foam::SPH::neighbourList::select
     vector2D* __restrict__ xw = wrapped_.data();
     label* __restrict__ cell = cellOf_.data();
     const label nx = cells.nCellsXY()[0];
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         xw[i] = cells.wrap(x[i]);
@@ -353,7 +371,7 @@ void Foam::SPH::neighbourList::select
 
     offsets_.resize(n + 1);
     label* __restrict__ off = offsets_.data();
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         label c = 0;

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "verletList.H"
+#include "openMPThreshold.H"
 #include "error.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -18,7 +19,7 @@ bool Foam::SPH::verletList::movedTooFar
     const vector2D* __restrict__ x0 = xBuild_.cdata();
     const scalar maxMove2 = sqr(0.5*skin_);
     label nFar = 0;
-    #pragma omp parallel for schedule(static) reduction(+: nFar)
+    #pragma omp parallel for schedule(static) reduction(+: nFar) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         // Minimum image: a point wrapped across a periodic seam since the

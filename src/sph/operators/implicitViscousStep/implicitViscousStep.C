@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "implicitViscousStep.H"
+#include "openMPThreshold.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -76,7 +77,7 @@ void Foam::SPH::implicitViscousStep::setSource
     const vector2D* normal = walls_.segmentNormals().cdata();
     const scalar* mu = mu_.cdata();
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(nFluid_))
     for (label a = 0; a < nFluid_; ++a)
     {
         scalar coupling = 0;

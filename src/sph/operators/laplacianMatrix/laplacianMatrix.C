@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "laplacianMatrix.H"
+#include "openMPThreshold.H"
 #include "error.H"
 
 #include <algorithm>
@@ -138,7 +139,7 @@ void Foam::SPH::laplacianMatrix::fillMatrix()
     A_.resizeNonZeros(start[n]);
     int* col = A_.innerIndexPtr();
     scalar* val = A_.valuePtr();
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         int k = start[i];

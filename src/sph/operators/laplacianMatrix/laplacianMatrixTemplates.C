@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "laplacianMatrix.H"
+#include "openMPThreshold.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -158,7 +159,7 @@ void Foam::SPH::laplacianMatrix::assemble
 
     rows_.resize(n);
     b_.resize(n);
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         matrixRow& row = rows_[i];

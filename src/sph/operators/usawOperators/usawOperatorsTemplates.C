@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "usawOperators.H"
+#include "openMPThreshold.H"
 
 // * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -44,7 +45,7 @@ inline void sumOverNeighboursAndWalls
 
     Result* res = result.data();
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label a = 0; a < n; ++a)
     {
         Type sum(Zero);

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "usawWalls.H"
+#include "openMPThreshold.H"
 #include "wendlandC2.H"
 #include "error.H"
 
@@ -260,7 +261,7 @@ void Foam::SPH::usawWalls::update(const UList<vector2D>& x)
     // First pass: how many segments each particle sees
     label* off = offsets_.data();
     off[0] = 0;
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label a = 0; a < n; ++a)
     {
         label count = 0;
@@ -291,7 +292,7 @@ void Foam::SPH::usawWalls::update(const UList<vector2D>& x)
     scalar* gamma = gamma_.data();
     vector2D* gradGamma = gradGamma_.data();
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label a = 0; a < n; ++a)
     {
         label k = off[a];

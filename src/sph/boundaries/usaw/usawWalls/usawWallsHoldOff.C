@@ -9,6 +9,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "usawWalls.H"
+#include "openMPThreshold.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -31,7 +32,8 @@ Foam::label Foam::SPH::usawWalls::holdOff
     const SPH::domain& dom = domain();
 
     label nHeld = 0;
-    #pragma omp parallel for schedule(static) reduction(+:nHeld)
+    #pragma omp parallel for schedule(static) reduction(+:nHeld) \
+        if(SPH::worthThreads(nFluid))
     for (label i = 0; i < nFluid; ++i)
     {
         bool held = false;

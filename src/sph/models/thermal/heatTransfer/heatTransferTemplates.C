@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "heatTransfer.H"
+#include "openMPThreshold.H"
 #include "usawOperators.H"
 
 // * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
@@ -94,7 +95,7 @@ void Foam::SPH::heatTransfer::laplacian
     const scalar* dAs = usaw.distances().cdata();
     const List<labelPair>& ends = usaw.segmentParticles();
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(nFluid))
     for (label a = 0; a < nFluid; ++a)
     {
         const scalar ka = tw.k ? (*tw.k)[a] : 0;

@@ -10,6 +10,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "wcsph.H"
+#include "openMPThreshold.H"
 #include "wcsphBodyForces.H"
 #include "usawWalls.H"
 
@@ -88,7 +89,8 @@ void Foam::SPH::wcsph::rateExtremes()
     const label nF = work_.nFluid;
     scalar maxU2 = 0, maxA2 = 0, maxC = 0;
 
-    #pragma omp parallel for schedule(static) reduction(max: maxU2, maxA2, maxC)
+    #pragma omp parallel for schedule(static) reduction(max: maxU2, maxA2, maxC) \
+        if(SPH::worthThreads(nF))
     for (label i = 0; i < nF; ++i)
     {
         maxU2 = max(maxU2, magSqr(U[i]));
@@ -141,7 +143,7 @@ void Foam::SPH::wcsph::rungeKutta4(const scalar dt)
         const scalar w = weight[stage];
         const scalar a = stage < 3 ? stageFraction[stage]*dt : 0;
 
-        #pragma omp parallel for schedule(static)
+        #pragma omp parallel for schedule(static) if(SPH::worthThreads(nF))
         for (label i = 0; i < nF; ++i)
         {
             sumX_[i] += w*U[i];

@@ -64,6 +64,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "wcsph.H"
+#include "openMPThreshold.H"
 #include "domain.H"
 
 #include <chrono>
@@ -81,7 +82,7 @@ void Foam::SPH::wcsph::symplecticPredictor(const scalar dt)
     const scalar half = 0.5*dt;
     const label nF = work_.nFluid;
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(nF))
     for (label i = 0; i < nF; ++i)
     {
         x0_[i] = x[i];
@@ -109,7 +110,7 @@ void Foam::SPH::wcsph::symplecticCorrector(const scalar dt)
     const scalar half = 0.5*dt;
     const label nF = work_.nFluid;
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(nF))
     for (label i = 0; i < nF; ++i)
     {
         U[i] = U0_[i] + dt*dUdt[i];

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "freeSurface.H"
+#include "openMPThreshold.H"
 #include "usawOperators.H"
 #include "kernelDispatch.H"
 #include "ghostSurface.H"
@@ -110,7 +111,7 @@ void Foam::SPH::freeSurface::setNormals()
             Info<< "    ghost free surface: lattice moment "
                 << w.latticeMoment << " (about -I)" << endl;
         }
-        #pragma omp parallel for schedule(static)
+        #pragma omp parallel for schedule(static) if(SPH::worthThreads(nFluid))
         for (label i = 0; i < nFluid; ++i)
         {
             gradOne_[i] = surface[i] ? mirroredGradOne(K, i) : vector2D::zero;
@@ -214,7 +215,7 @@ void Foam::SPH::freeSurface::execute(const scalar dt)
     // (section 3.2, after eq. (37))
     const scalar near = 0.5*w.W.support();
     label* nearSurface = w.nearSurface.data();
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(nFluid))
     for (label i = 0; i < nFluid; ++i)
     {
         label isNear = surface[i];

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pressurePoisson.H"
+#include "openMPThreshold.H"
 #include "checkedEntry.H"
 #include "usawOperators.H"
 #include "kernelDispatch.H"
@@ -35,7 +36,7 @@ void Foam::SPH::pressurePoisson::classifyRows(const Kernel& K)
     // shares with reached vertices, and copies the A of such a neighbour
     // along the wall (else p = 0)
     labelList& copyFrom = laplacian_.copyFrom();
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(n))
     for (label i = 0; i < n; ++i)
     {
         bool reached = false;

@@ -9,6 +9,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "wcsphDummyRepulsive.H"
+#include "openMPThreshold.H"
 #include "wcsphPairTerms.H"
 #include "wcsphWallPressure.H"
 
@@ -61,7 +62,7 @@ void Foam::SPH::wcsphDummyRepulsive::fluidRates(const Kernel& W)
     // Repulsion, 004_... eqs. (11)-(12)
     const scalar ksh = ks_*h, eks = std::exp(-3*ks_*ks_), K = K_;
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(nF))
     for (label i = 0; i < nF; ++i)
     {
         const scalar rhoI = rho[i], Vi = m/rhoI, cI = c[i];

@@ -10,6 +10,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "wcsphUsaw.H"
+#include "openMPThreshold.H"
 #include "wcsphPairTerms.H"
 #include "usawOperators.H"
 
@@ -61,7 +62,7 @@ void Foam::SPH::wcsphUsaw::fluidRates(const Kernel& W)
     scalar* drhodt = w.drhodt.data();
     vector2D* dUdt = w.dUdt.data();
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(nF))
     for (label i = 0; i < nF; ++i)
     {
         const scalar rhoI = rho[i], cI = c[i];
