@@ -22,7 +22,9 @@ Foam::SPH::wcsphBodyForces::wcsphBodyForces
     gPeriodic_(gPeriodic),
     f_(forces_->force()),
     f0_(f_)
-{}
+{
+    work_.bodyAcceleration = f_ + gPeriodic_;
+}
 
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
@@ -73,6 +75,7 @@ void Foam::SPH::wcsphBodyForces::execute(const scalar dt)
     // Eq. (68) over the fluid at the end of the step, eq. (67) with its dt
     wallModel_.fluidVolumes(V_);
     f_ = forces_->acceleration(work_.parts.field<vector2D>("U"), V_, dt);
+    work_.bodyAcceleration = f_ + gPeriodic_;
 }
 
 
@@ -112,6 +115,7 @@ void Foam::SPH::wcsphBodyForces::save()
 void Foam::SPH::wcsphBodyForces::restore()
 {
     f_ = f0_;
+    work_.bodyAcceleration = f_ + gPeriodic_;
     forces_->restore();
 }
 

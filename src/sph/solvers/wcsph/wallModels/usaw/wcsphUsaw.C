@@ -65,6 +65,10 @@ Foam::SPH::wcsphUsaw::wcsphUsaw
     (
         checkedScalar(schemes, "backgroundPressure", 0, {0, VGREAT}, "Pa")
     ),
+    viscousWallPressure_
+    (
+        schemes.getOrDefault<bool>("wallPressureViscous", false)
+    ),
     wallX_(walls.points().size()),
     wallU_(walls.points().size()),
     wallAcceleration_(walls.points().size(), vector2D::zero)
@@ -160,7 +164,12 @@ void Foam::SPH::wcsphUsaw::rates(const scalar t)
         motion_.movesGeometry() ? &wallAcceleration_ : nullptr;
     dispatch(kernel_, [&](const auto& W)
     {
-        shepardWallPressure(W, w, 0, wallAcceleration);
+        // viscous_: the last rate evaluation's L{mu, u} (a stage old)
+        shepardWallPressure
+        (
+            W, w, 0, wallAcceleration,
+            viscousWallPressure_ ? &viscous_ : nullptr
+        );
         w.setSoundSpeeds();
         fluidRates(W);
     });
@@ -202,6 +211,13 @@ void Foam::SPH::wcsphUsaw::describe(Ostream& os, const char* indent) const
         << indent << "wall particles     vertex particles, mass rho0 theta/(2 pi)"
         << " dr^2, wall velocity; pressure eq. (10) of 004_..., density"
         << " from eq. (4)" << nl
+        << indent << "vertex pressure    Shepard average of p_b + "
+        << (
+               viscousWallPressure_
+             ? "(rho_b (g + f) + L_b{mu, u}).(x_v - x_b)"
+             : "rho_b (g + f).(x_v - x_b)"
+           )
+        << nl
         << indent << "equation of state  Tait eq. (4): c0 " << w.c0 << ", gamma "
         << w.gamma << ", b0 " << w.b0 << nl
         << indent << "continuity         -rho D{u}, eq. (9)";
