@@ -3,7 +3,7 @@
 the errors.csv files of the validation tutorials (errorTable.py), the
 tutorials' own pictures, the stability map and the speed benchmarks.
 
-    sphReport.py -out DIR -runs RUNS.tsv [-project DIR] [-title T]
+    sphReport.py -out DIR -runs RUNS.tsv [-project DIR] [-title T] [-quick]
 
 RUNS.tsv (written by Allreport), one line per tutorial run or reused:
     case  folder  action  seconds  cpuSeconds  command  log
@@ -31,14 +31,17 @@ SKIP_DIRS = {"VTK", "postProcessing", "constant", "system", "0", "0.orig",
 MAX_PICTURES = 8
 
 
-def walk(folder):
+def walk(folder, quick):
     """(errors.csv paths, PNG paths) under folder, leaving out the case
-    internals (time folders, VTK, postProcessing ...)."""
+    internals (time folders, VTK, postProcessing ...) and, for the full
+    report, the quick form's runs/test (a user's Allrun -test: its coarse,
+    short runs are not the case's results)."""
     tables, pictures = [], []
     for root, dirs, files in os.walk(folder):
         dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS
                          and not d.startswith("processor")
-                         and not re.fullmatch(r"[0-9.e+-]+", d))
+                         and not re.fullmatch(r"[0-9.e+-]+", d)
+                         and (quick or not (d == "test" and os.path.basename(root) == "runs")))
         tables += [os.path.join(root, f) for f in files if f == errorTable.FILE_NAME]
         pictures += sorted(os.path.join(root, f) for f in files if f.endswith(".png"))
     return tables, pictures
@@ -58,12 +61,12 @@ class Section:
         self.case, self.runs, self.rows, self.pictures, self.problems = case, [], [], [], []
         self.png = None
 
-    def add_run(self, run):
+    def add_run(self, run, quick):
         self.runs.append(run)
         if not os.path.isdir(run["folder"]):
             self.problems.append("%s: no such folder" % run["folder"])
             return
-        tables, pictures = walk(run["folder"])
+        tables, pictures = walk(run["folder"], quick)
         for t in tables:
             try:
                 rows = errorTable.read_errors(t)
@@ -128,12 +131,14 @@ def main():
     ap.add_argument("-project", default=os.path.join(here, "..", "..", ".."))
     ap.add_argument("-title", default="sphFoam validation report")
     ap.add_argument("-note", default="")
+    ap.add_argument("-quick", action="store_true",
+                    help="the runs are Allreport -quick's: their runs/test counts")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     reportPage.PROJECT[0] = os.path.abspath(a.project)
     sections = {}
     for run in read_runs(a.runs):
-        sections.setdefault(run["case"], Section(run["case"])).add_run(run)
+        sections.setdefault(run["case"], Section(run["case"])).add_run(run, a.quick)
     for s in sections.values():
         if s.rows:
             s.png = slug(s.case) + ".png"
