@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "openMPWaitPolicy.H"
+#include "openMPThreshold.H"
 
 #include <cstdlib>
 #include <unistd.h>
@@ -32,7 +33,9 @@ void Foam::SPH::printOpenMPSettings(Ostream& os)
     os  << "OpenMP: " << omp_get_max_threads()
         << " thread(s) (OMP_NUM_THREADS), wait policy "
         << (policy ? policy : "unset: spin, then sleep")
-        << " (OMP_WAIT_POLICY)" << nl;
+        << " (OMP_WAIT_POLICY); loops of fewer than "
+        << minParticlesPerThread << " particles a thread run on one"
+        << nl;
 }
 
 
