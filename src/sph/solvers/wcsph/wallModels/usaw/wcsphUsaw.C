@@ -45,6 +45,23 @@ namespace
         );
         return runTime;
     }
+
+    //- The log's words for the form of the pressure gradient
+    const char* gradientFormWords(const Foam::SPH::projection::gradientForm f)
+    {
+        using gf = Foam::SPH::projection::gradientForm;
+        switch (f)
+        {
+            case gf::symmetric:
+                return "G- (8) (pressureGradient symmetric)";
+            case gf::renormalised:
+                return
+                    "G- (8) renormalised by G-{r}^-1 (pressureGradient"
+                    " renormalised; beyond 000_...)";
+            default:
+                return "G+ (5) (pressureGradient antisymmetric)";
+        }
+    }
 }
 
 
@@ -68,6 +85,14 @@ Foam::SPH::wcsphUsaw::wcsphUsaw
     viscousWallPressure_
     (
         schemes.getOrDefault<bool>("wallPressureViscous", false)
+    ),
+    gradientForm_
+    (
+        projection::gradientFormNames.getOrDefault
+        (
+            "pressureGradient", schemes,
+            projection::gradientForm::antisymmetric
+        )
     ),
     wallX_(walls.points().size()),
     wallU_(walls.points().size()),
@@ -116,6 +141,10 @@ void Foam::SPH::wcsphUsaw::setUp()
     pTotal_.setSize(n);
     divU_.setSize(n);
     gradP_.setSize(n);
+    if (gradientForm_ == projection::gradientForm::renormalised)
+    {
+        R_.setSize(n, tensor2D::I);
+    }
     viscous_.setSize(n, vector2D::zero);
 
     // A restart's segments where its vertex particles are
@@ -230,8 +259,10 @@ void Foam::SPH::wcsphUsaw::describe(Ostream& os, const char* indent) const
                  : "rho, as printed"
                );
     }
-    os  << nl << indent << "momentum           -G+{p + p_b}/rho, eqs. (5), (13):"
-        << " background pressure p_b " << pBackground_ << ", gravity " << w.g << nl << indent << "viscosity          ";
+    os  << nl << indent << "momentum           -G{p + p_b}/rho, eq. (13), with "
+        << gradientFormWords(gradientForm_)
+        << ": background pressure p_b " << pBackground_ << ", gravity " << w.g
+        << nl << indent << "viscosity          ";
     if (w.nut)
     {
         os  << "L{mu_E, u}/rho, mu_E = rho0 (nu + nu_T), the log-law wall"

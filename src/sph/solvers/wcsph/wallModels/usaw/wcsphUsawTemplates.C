@@ -33,7 +33,7 @@ void Foam::SPH::wcsphUsaw::fluidRates(const Kernel& W)
 
     // Leroy et al. 2014 eqs. (9), (5), (15)-(17)
     usaw::div(W, w.nbrs, *usaw_, V_, Uf, divU_);
-    usaw::gradPlus(W, w.nbrs, *usaw_, V_, pTotal_, gradP_);
+    pressureGradient(W);
     if (w.nut)
     {
         turbulentViscous(Uf);
@@ -94,6 +94,29 @@ void Foam::SPH::wcsphUsaw::fluidRates(const Kernel& W)
         }
         drhodt[i] = drho/gamma[i] - rhoI*divU_[i];
         dUdt[i] = dU/gamma[i] + (viscous_[i] - gradP_[i])/rhoI + g;
+    }
+}
+
+
+template<class Kernel>
+void Foam::SPH::wcsphUsaw::pressureGradient(const Kernel& W)
+{
+    const wcsphWork& w = work_;
+    switch (gradientForm_)
+    {
+        case projection::gradientForm::antisymmetric:
+            usaw::gradPlus(W, w.nbrs, *usaw_, V_, pTotal_, gradP_);
+            break;
+        case projection::gradientForm::symmetric:
+            usaw::gradMinus(W, w.nbrs, *usaw_, V_, pTotal_, gradP_);
+            break;
+        case projection::gradientForm::renormalised:
+            usaw::renormalisation
+            (
+                W, w.nbrs, *usaw_, V_, w.parts.positions(), 0.1, R_
+            );
+            usaw::gradMinus(W, w.nbrs, *usaw_, V_, R_, pTotal_, gradP_);
+            break;
     }
 }
 
