@@ -202,6 +202,25 @@ TEST(wcsphFoam, unknownBoundaryMethodListsTheValidOnes)
 }
 
 
+TEST(wcsphFoam, usawEntriesAreRefusedWithDummyWalls)
+{
+    // backgroundPressure and pressureGradient act in the USAW walls'
+    // momentum equation only: with dummy walls an error, not ignored
+    for (const std::string key : {"backgroundPressure", "pressureGradient"})
+    {
+        const fileName dir = tankCase("wcsphDummy_" + key, 0.05, "0.01");
+        std::string out;
+        run("echo '" + key + " "
+            + (key == "pressureGradient" ? "symmetric" : "100") + ";' >> "
+            + dir/"system"/"sphSchemes", out);
+        EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 1) << key;
+        EXPECT_NE(out.find("Entry " + key + ": only with boundaryMethod usaw"),
+            std::string::npos) << out;
+        EXPECT_NE(out.find("system/sphSchemes"), std::string::npos) << out;
+    }
+}
+
+
 TEST(wcsphFoam, collapsingTimeStepStopsWithTheLastGoodStateWritten)
 {
     // Falling water speeds up, so the time step shrinks below 0.9999 of

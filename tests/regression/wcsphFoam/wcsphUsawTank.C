@@ -158,10 +158,10 @@ TEST(wcsphFoamUsaw, uniformPressureInAClosedBoxStaysAtRestWithTheSymmetricGradie
     };
     std::string out;
     EXPECT_LT(maxSpeed("symmetric", out), 1e-12);
-    EXPECT_NE(out.find("G- (8) (pressureGradient symmetric)"), std::string::npos) << out;
+    EXPECT_NE(out.find("G-{p} (8) (pressureGradient symmetric)"), std::string::npos) << out;
     EXPECT_LT(maxSpeed("renormalised", out), 1e-12);
     EXPECT_GT(maxSpeed("antisymmetric", out), 1e-3);
-    EXPECT_NE(out.find("G+ (5) (pressureGradient antisymmetric)"), std::string::npos) << out;
+    EXPECT_NE(out.find("G+{p} (5) (pressureGradient antisymmetric)"), std::string::npos) << out;
 
     // An unknown form: OpenFOAM's error naming the file and the valid words
     const fileName bad = closedBox("difference", out);

@@ -20,22 +20,25 @@ Foam::SPH::projection::gradientFormNames
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const char* Foam::SPH::projection::formDescription(const gradientForm form)
+{
+    switch (form)
+    {
+        case gradientForm::symmetric:
+            return "G-{p} (8) (pressureGradient symmetric)";
+        case gradientForm::renormalised:
+            return
+                "G-{p} (8) renormalised by G-{r}^-1 (pressureGradient"
+                " renormalised; beyond 000_...)";
+        default:
+            return "G+{p} (5) (pressureGradient antisymmetric)";
+    }
+}
+
+
 void Foam::SPH::projection::describe(Ostream& os) const
 {
-    os  << "eq. (32) with ";
-    switch (form_)
-    {
-        case gradientForm::antisymmetric:
-            os  << "G+{p} (5) (pressureGradient antisymmetric)";
-            break;
-        case gradientForm::symmetric:
-            os  << "G-{p} (8) (pressureGradient symmetric)";
-            break;
-        case gradientForm::renormalised:
-            os  << "G-{p} (8) renormalised by G-{r}^-1 (pressureGradient"
-                   " renormalised; beyond 000_...)";
-            break;
-    }
+    os  << "eq. (32) with " << formDescription(form_);
     if (work_.dynamicPressureGradient)
     {
         os  << " of the dynamic pressure p - rho g.x (confined; Leroy et"

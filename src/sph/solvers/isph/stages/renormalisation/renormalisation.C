@@ -15,7 +15,7 @@ void Foam::SPH::renormalisation::execute(const scalar dt)
     {
         usaw::renormalisation
         (
-            K, w.nbrs, w.usaw, w.V, w.parts.positions(), minMomentDet_, w.R
+            K, w.nbrs, w.usaw, w.V, w.parts.positions(), minMomentDet, w.R
         );
     });
 }

@@ -44,11 +44,15 @@ Foam::SPH::wcsphDummyRepulsive::wcsphDummyRepulsive
             << " (the repulsion must lie within the kernel support)"
             << exit(FatalIOError);
     }
-    if (schemes.found("backgroundPressure"))
+    // Entries of the USAW walls' momentum equation: not silently ignored
+    for (const word key : {"backgroundPressure", "pressureGradient"})
     {
-        FatalIOErrorInFunction(schemes.lookup("backgroundPressure"))
-            << "Entry backgroundPressure: only with boundaryMethod usaw"
-            << exit(FatalIOError);
+        if (schemes.found(key))
+        {
+            FatalIOErrorInFunction(schemes.lookup(key))
+                << "Entry " << key << ": only with boundaryMethod usaw"
+                << exit(FatalIOError);
+        }
     }
     wallConditions(runTime, walls, "U").allowOnly
     (

@@ -46,22 +46,6 @@ namespace
         return runTime;
     }
 
-    //- The log's words for the form of the pressure gradient
-    const char* gradientFormWords(const Foam::SPH::projection::gradientForm f)
-    {
-        using gf = Foam::SPH::projection::gradientForm;
-        switch (f)
-        {
-            case gf::symmetric:
-                return "G- (8) (pressureGradient symmetric)";
-            case gf::renormalised:
-                return
-                    "G- (8) renormalised by G-{r}^-1 (pressureGradient"
-                    " renormalised; beyond 000_...)";
-            default:
-                return "G+ (5) (pressureGradient antisymmetric)";
-        }
-    }
 }
 
 
@@ -260,7 +244,7 @@ void Foam::SPH::wcsphUsaw::describe(Ostream& os, const char* indent) const
                );
     }
     os  << nl << indent << "momentum           -G{p + p_b}/rho, eq. (13), with "
-        << gradientFormWords(gradientForm_)
+        << projection::formDescription(gradientForm_)
         << ": background pressure p_b " << pBackground_ << ", gravity " << w.g
         << nl << indent << "viscosity          ";
     if (w.nut)

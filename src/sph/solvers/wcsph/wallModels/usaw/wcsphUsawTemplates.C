@@ -13,6 +13,7 @@ Description
 #include "openMPThreshold.H"
 #include "wcsphPairTerms.H"
 #include "usawOperators.H"
+#include "renormalisation.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -33,7 +34,18 @@ void Foam::SPH::wcsphUsaw::fluidRates(const Kernel& W)
 
     // Leroy et al. 2014 eqs. (9), (5), (15)-(17)
     usaw::div(W, w.nbrs, *usaw_, V_, Uf, divU_);
-    pressureGradient(W);
+    if (gradientForm_ == projection::gradientForm::renormalised)
+    {
+        usaw::renormalisation
+        (
+            W, w.nbrs, *usaw_, V_, w.parts.positions(),
+            renormalisation::minMomentDet, R_
+        );
+    }
+    projection::gradient
+    (
+        gradientForm_, kernel_, w.nbrs, *usaw_, V_, R_, pTotal_, gradP_
+    );
     if (w.nut)
     {
         turbulentViscous(Uf);
@@ -94,29 +106,6 @@ void Foam::SPH::wcsphUsaw::fluidRates(const Kernel& W)
         }
         drhodt[i] = drho/gamma[i] - rhoI*divU_[i];
         dUdt[i] = dU/gamma[i] + (viscous_[i] - gradP_[i])/rhoI + g;
-    }
-}
-
-
-template<class Kernel>
-void Foam::SPH::wcsphUsaw::pressureGradient(const Kernel& W)
-{
-    const wcsphWork& w = work_;
-    switch (gradientForm_)
-    {
-        case projection::gradientForm::antisymmetric:
-            usaw::gradPlus(W, w.nbrs, *usaw_, V_, pTotal_, gradP_);
-            break;
-        case projection::gradientForm::symmetric:
-            usaw::gradMinus(W, w.nbrs, *usaw_, V_, pTotal_, gradP_);
-            break;
-        case projection::gradientForm::renormalised:
-            usaw::renormalisation
-            (
-                W, w.nbrs, *usaw_, V_, w.parts.positions(), 0.1, R_
-            );
-            usaw::gradMinus(W, w.nbrs, *usaw_, V_, R_, pTotal_, gradP_);
-            break;
     }
 }
 
