@@ -60,6 +60,16 @@ namespace
 }
 
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::SPH::heatTransfer::vertexForm>
+Foam::SPH::heatTransfer::vertexFormNames
+({
+    { vertexForm::shepard, "shepard" },
+    { vertexForm::linear, "linear" },
+});
+
+
 // * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::SPH::heatTransfer::isothermalFlux
@@ -210,6 +220,10 @@ Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
             << " taken off, Leroy et al. 2015, eq. (43))" << exit(FatalIOError);
     }
     removeMean_ = (mean == "remove");
+    walls_.form = vertexFormNames.getOrDefault
+    (
+        "vertexTemperature", schemes, vertexForm::shepard
+    );
 
     // OpenFOAM's readhRef.H and gh.H: hRef optional, 0 without the file
     const uniformDimensionedScalarField hRef
@@ -227,6 +241,14 @@ Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
         << props_.TRef << ", Pr " << props_.Pr << ", Prt " << props_.Prt
         << ", K = nu/Pr " << props_.K << ", hRef " << hRef.value()
         << (removeMean_ ? ", the fluid's mean force removed (eq. (43))" : "")
+        << nl
+        << "    vertex T of adiabatic and flux walls: "
+        << (
+               walls_.form == vertexForm::linear
+             ? "eq. (32) with a tangential gradient fitted (vertexTemperature"
+               " linear)"
+             : "eq. (32) (vertexTemperature shepard)"
+           )
         << nl;
     parts_.add<scalar>("T");
     parts_.add<scalar>("p_rgh");

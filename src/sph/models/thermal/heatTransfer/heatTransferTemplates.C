@@ -37,11 +37,14 @@ void Foam::SPH::heatTransfer::vertexValues
         }
         // Eq. (32) around v for each of its segments (at most two): the
         // distance of b from the segment's line is -r_vb.n_s, v on it;
-        // dT/dn (inward) = -G of the fixedGradient, 0 adiabatic
+        // dT/dn (inward) = -G of the fixedGradient, 0 adiabatic. linear:
+        // y_b = T_b - dT/dn d_b fitted as T_v + g_t s_b (s_b along the
+        // segment) by weighted least squares, the sums' moments below
         const labelList& segs = walls.vertexSegments[iv];
         const label nSeg = min(segs.size(), label(2));
         scalar alpha = 0;
-        scalar sumT[2] = {0, 0};
+        scalar sumT[2] = {0, 0}, sumS[2] = {0, 0}, sumSS[2] = {0, 0};
+        scalar sumTS[2] = {0, 0};
         for (label j = off[v]; j < off[v + 1]; ++j)
         {
             const label b = nbr[j];
@@ -50,16 +53,31 @@ void Foam::SPH::heatTransfer::vertexValues
             alpha += Vw;
             for (label m = 0; m < nSeg; ++m)
             {
-                const label s = segs[m];
+                const vector2D& n = normal[segs[m]];
                 const scalar dTdn =
-                    walls.kind[s] == fluxImposed ? -walls.gradient[s] : 0;
-                const scalar d = -(rij[j] & normal[s]);
-                sumT[m] += Vw*(T[b] - dTdn*d);
+                    walls.kind[segs[m]] == fluxImposed
+                  ? -walls.gradient[segs[m]] : 0;
+                const scalar yb = T[b] + dTdn*(rij[j] & n);
+                const scalar sb = rij[j].x()*n.y() - rij[j].y()*n.x();
+                sumT[m] += Vw*yb;
+                sumS[m] += Vw*sb;
+                sumSS[m] += Vw*sb*sb;
+                sumTS[m] += Vw*yb*sb;
             }
         }
         if (alpha > 0 && nSeg > 0)
         {
-            T[v] = (sumT[0] + sumT[1])/(nSeg*alpha);
+            scalar Tv = 0;
+            for (label m = 0; m < nSeg; ++m)
+            {
+                const scalar det = alpha*sumSS[m] - sqr(sumS[m]);
+                Tv +=
+                    walls.form == vertexForm::linear
+                 && det > minMomentDet*alpha*sumSS[m]
+                  ? (sumSS[m]*sumT[m] - sumS[m]*sumTS[m])/det
+                  : sumT[m]/alpha;
+            }
+            T[v] = Tv/nSeg;
         }
     }
 }
