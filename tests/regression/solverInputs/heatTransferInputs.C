@@ -6,7 +6,9 @@ Description
     with exit code 1 and a FatalIOError naming the file and the entry,
     never a crash: a 0/T without an entry for a wall patch, a
     fixedGradient without its gradient, beta or Pr missing from
-    constant/transportProperties when there is a 0/T, TRef a word. The
+    constant/transportProperties when there is a 0/T, TRef a word, a
+    vertexTemperature or isothermalFluxMinDistance out of its range
+    (system/sphSchemes). The
     same tank with a good 0/T runs, and without one it is isothermal.
 
 \*---------------------------------------------------------------------------*/
@@ -122,6 +124,29 @@ TEST(heatTransferInputs, TRefAWord)
     (
         runHeated("TRefWord", goodT, "sed -i 's/^TRef .*/TRef Tmean;/' constant/transportProperties"),
         {"Entry TRef", "is not a number", "constant/transportProperties"}
+    );
+}
+
+
+TEST(heatTransferInputs, badWallTemperatureSchemes)
+{
+    expectError
+    (
+        runHeated
+        (
+            "fluxMinDistance", goodT,
+            "echo 'isothermalFluxMinDistance 0;' >> system/sphSchemes"
+        ),
+        {"Entry isothermalFluxMinDistance 0", "> 0 and <= 1", "sphSchemes"}
+    );
+    expectError
+    (
+        runHeated
+        (
+            "vertexForm", goodT,
+            "echo 'vertexTemperature quadratic;' >> system/sphSchemes"
+        ),
+        {"quadratic is not in enumeration", "shepard", "linear", "sphSchemes"}
     );
 }
 

@@ -10,6 +10,7 @@
 #include "uniformDimensionedFields.H"
 #include "Time.H"
 #include "IOdictionary.H"
+#include "checkedEntry.H"
 #include <cmath>
 
 // * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
@@ -200,6 +201,7 @@ Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
     g_(fluidProperties(runTime).g),
     ghRef_(0),
     removeMean_(false),
+    fluxMinDistance_(1),
     nut_(nullptr)
 {
     // Eq. (43) of Leroy et al. 2015: sphSchemes' meanBuoyancy
@@ -224,6 +226,11 @@ Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
     (
         "vertexTemperature", schemes, vertexForm::shepard
     );
+    fluxMinDistance_ = checkedScalar
+    (
+        schemes, "isothermalFluxMinDistance", 1, {0, 1, true},
+        "in dr: the floor of dr_as in eqs. (34)-(37)"
+    );
 
     // OpenFOAM's readhRef.H and gh.H: hRef optional, 0 without the file
     const uniformDimensionedScalarField hRef
@@ -242,6 +249,8 @@ Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
         << ", K = nu/Pr " << props_.K << ", hRef " << hRef.value()
         << (removeMean_ ? ", the fluid's mean force removed (eq. (43))" : "")
         << nl
+        << "    isothermal walls: dr_as = max(d_as, " << fluxMinDistance_
+        << " dr) in eqs. (34)-(37)" << nl
         << "    vertex T of adiabatic and flux walls: "
         << (
                walls_.form == vertexForm::linear
@@ -298,7 +307,7 @@ void Foam::SPH::heatTransfer::correct(const scalar dt)
         laplacian
         (
             K, w.nbrs, w.usaw, w.V, w.nFluid, KE_, T, walls_, props_.K,
-            props_.nu, w.dr, turbulent_, L_
+            props_.nu, fluxMinDistance_*w.dr, turbulent_, L_
         );
     });
     for (label i = 0; i < w.nFluid; ++i)
