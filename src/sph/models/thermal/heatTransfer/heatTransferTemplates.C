@@ -73,7 +73,7 @@ void Foam::SPH::heatTransfer::vertexValues
                 const scalar det = alpha*sumSS[m] - sqr(sumS[m]);
                 Tv +=
                     walls.form == vertexForm::linear
-                 && det > minMomentDet*alpha*sumSS[m]
+                 && det > minFitDet*alpha*sumSS[m]
                   ? (sumSS[m]*sumT[m] - sumS[m]*sumTS[m])/det
                   : sumT[m]/alpha;
             }
