@@ -78,15 +78,15 @@ Foam::scalar Foam::SPH::heatTransfer::isothermalFlux
     const scalar Ta,
     const scalar Ts,
     const scalar d,
-    const scalar dr,
+    const scalar drFloor,
     const scalar K,
     const scalar nu,
     const scalar ka,
     const turbulentWall& tw
 )
 {
-    // dr_as = max(d_as, dr) (22), as the velocity's
-    const scalar dAs = max(d, dr);
+    // dr_as = max(d_as, dr) (22), as the velocity's, or a lower floor
+    const scalar dAs = max(d, drFloor);
     if (tw.law && ka > 0)
     {
         // (35)-(37): y+ from u_k

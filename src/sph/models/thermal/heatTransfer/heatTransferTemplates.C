@@ -42,6 +42,16 @@ void Foam::SPH::heatTransfer::vertexValues
         // segment) by weighted least squares, the sums' moments below
         const labelList& segs = walls.vertexSegments[iv];
         const label nSeg = min(segs.size(), label(2));
+        vector2D n[2];
+        scalar dTdn[2] = {0, 0};
+        for (label m = 0; m < nSeg; ++m)
+        {
+            n[m] = normal[segs[m]];
+            if (walls.kind[segs[m]] == fluxImposed)
+            {
+                dTdn[m] = -walls.gradient[segs[m]];
+            }
+        }
         scalar alpha = 0;
         scalar sumT[2] = {0, 0}, sumS[2] = {0, 0}, sumSS[2] = {0, 0};
         scalar sumTS[2] = {0, 0};
@@ -53,12 +63,8 @@ void Foam::SPH::heatTransfer::vertexValues
             alpha += Vw;
             for (label m = 0; m < nSeg; ++m)
             {
-                const vector2D& n = normal[segs[m]];
-                const scalar dTdn =
-                    walls.kind[segs[m]] == fluxImposed
-                  ? -walls.gradient[segs[m]] : 0;
-                const scalar yb = T[b] + dTdn*(rij[j] & n);
-                const scalar sb = rij[j].x()*n.y() - rij[j].y()*n.x();
+                const scalar yb = T[b] + dTdn[m]*(rij[j] & n[m]);
+                const scalar sb = rij[j].x()*n[m].y() - rij[j].y()*n[m].x();
                 sumT[m] += Vw*yb;
                 sumS[m] += Vw*sb;
                 sumSS[m] += Vw*sb*sb;
@@ -96,7 +102,7 @@ void Foam::SPH::heatTransfer::laplacian
     const wallData& walls,
     const scalar K,
     const scalar nu,
-    const scalar dr,
+    const scalar drFloor,
     const turbulentWall& tw,
     UList<scalar>& result
 )
@@ -134,7 +140,10 @@ void Foam::SPH::heatTransfer::laplacian
                 {
                     const scalar Ts =
                         0.5*(T[ends[s].first()] + T[ends[s].second()]);
-                    q = isothermalFlux(T[a], Ts, dAs[m], dr, K, nu, ka, tw);
+                    q = isothermalFlux
+                    (
+                        T[a], Ts, dAs[m], drFloor, K, nu, ka, tw
+                    );
                     break;
                 }
             }
