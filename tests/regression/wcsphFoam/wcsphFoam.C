@@ -204,14 +204,21 @@ TEST(wcsphFoam, unknownBoundaryMethodListsTheValidOnes)
 
 TEST(wcsphFoam, usawEntriesAreRefusedWithDummyWalls)
 {
-    // backgroundPressure and pressureGradient act in the USAW walls'
-    // momentum equation only: with dummy walls an error, not ignored
-    for (const std::string key : {"backgroundPressure", "pressureGradient"})
+    // backgroundPressure, pressureGradient and tensileInstabilityControl
+    // act in the USAW walls' momentum equation only: with dummy walls an
+    // error, not ignored
+    for
+    (
+        const std::string key
+      : {"backgroundPressure", "pressureGradient", "tensileInstabilityControl"}
+    )
     {
         const fileName dir = tankCase("wcsphDummy_" + key, 0.05, "0.01");
         std::string out;
-        run("echo '" + key + " "
-            + (key == "pressureGradient" ? "symmetric" : "100") + ";' >> "
+        const std::string value =
+            key == "pressureGradient" ? "symmetric"
+          : key == "backgroundPressure" ? "100" : "yes";
+        run("echo '" + key + " " + value + ";' >> "
             + dir/"system"/"sphSchemes", out);
         EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 1) << key;
         EXPECT_NE(out.find("Entry " + key + ": only with boundaryMethod usaw"),

@@ -46,6 +46,58 @@ namespace
         EXPECT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
         return dir;
     }
+
+    //- The closed box of the moving-walls test, held still, no gravity,
+    //- with the lines extraSchemes added to system/sphSchemes and p =
+    //- pInitial (uniform; hydrostatic is 0 without gravity), to t = 0.1 s
+    fileName closedBox
+    (
+        const std::string& name,
+        const std::string& extraSchemes,
+        const std::string& pInitial,
+        std::string& out
+    )
+    {
+        const fileName dir =
+            fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/("closedBox_" + name);
+        rmDir(dir);
+        mkDir(dir.path());
+        run("cp -r " + here + "/movingBox " + dir
+            + " && cd " + dir + " && rm constant/dynamicMeshDict"
+            + " && sed -i 's/^internalField .*/internalField uniform (0 0 0);/;"
+              " s/movingWallVelocity/noSlip/; /value  *uniform/d' 0/U"
+            + " && sed -i 's/^internalField .*/internalField " + pInitial + ";/' 0/p"
+            + " && sed -i 's/^value .*/value (0 0 0);/' constant/g"
+            + " && sed -i 's/^endTime .*/endTime 0.1;/;"
+              " s/^writeInterval .*/writeInterval 0.1;/' system/controlDict"
+            + " && printf '" + extraSchemes + "\\n' >> system/sphSchemes",
+            out);
+        EXPECT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
+        return dir;
+    }
+
+    //- The fastest particle of the closed box at t = 0.1 s
+    scalar closedBoxMaxSpeed
+    (
+        const std::string& name,
+        const std::string& extraSchemes,
+        const std::string& pInitial,
+        std::string& out
+    )
+    {
+        const fileName dir = closedBox(name, extraSchemes, pInitial, out);
+        EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 0) << out;
+        auto runTime = sphTest::makeTime(dir);
+        SPH::particles parts(*runTime, "0.1", SPH::particles::defaultLocal, false);
+        parts.add<vector2D>("U");
+        parts.read();
+        scalar speed = 0;
+        for (const vector2D& U : parts.field<vector2D>("U"))
+        {
+            speed = max(speed, mag(U));
+        }
+        return speed;
+    }
 }
 
 
@@ -123,51 +175,64 @@ TEST(wcsphFoamUsaw, uniformPressureInAClosedBoxStaysAtRestWithTheSymmetricGradie
     // walls: the water starts to move (measured 2.2e-2 m/s, p down to
     // -391 Pa), the error that made the drag on the periodic cylinders
     // depend on the pressure's level (tutorials/periodic/cylinderArray)
-    auto closedBox = [](const std::string& form, std::string& out)
-    {
-        const fileName dir =
-            fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/("closedBox_" + form);
-        rmDir(dir);
-        mkDir(dir.path());
-        run("cp -r " + here + "/movingBox " + dir
-            + " && cd " + dir + " && rm constant/dynamicMeshDict"
-            + " && sed -i 's/^internalField .*/internalField uniform (0 0 0);/;"
-              " s/movingWallVelocity/noSlip/; /value  *uniform/d' 0/U"
-            + " && sed -i 's/^value .*/value (0 0 0);/' constant/g"
-            + " && sed -i 's/^endTime .*/endTime 0.1;/;"
-              " s/^writeInterval .*/writeInterval 0.1;/' system/controlDict"
-            + " && echo 'pressureGradient " + form + ";' >> system/sphSchemes",
-            out);
-        EXPECT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
-        return dir;
-    };
-    auto maxSpeed = [&](const std::string& form, std::string& out)
-    {
-        const fileName dir = closedBox(form, out);
-        EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 0) << out;
-        auto runTime = sphTest::makeTime(dir);
-        SPH::particles parts(*runTime, "0.1", SPH::particles::defaultLocal, false);
-        parts.add<vector2D>("U");
-        parts.read();
-        scalar speed = 0;
-        for (const vector2D& U : parts.field<vector2D>("U"))
-        {
-            speed = max(speed, mag(U));
-        }
-        return speed;
-    };
     std::string out;
-    EXPECT_LT(maxSpeed("symmetric", out), 1e-12);
+    auto maxSpeed = [&](const std::string& form)
+    {
+        return closedBoxMaxSpeed
+        (
+            form, "pressureGradient " + form + ";", "hydrostatic", out
+        );
+    };
+    EXPECT_LT(maxSpeed("symmetric"), 1e-12);
     EXPECT_NE(out.find("G-{p} (8) (pressureGradient symmetric)"), std::string::npos) << out;
-    EXPECT_LT(maxSpeed("renormalised", out), 1e-12);
-    EXPECT_GT(maxSpeed("antisymmetric", out), 1e-3);
+    EXPECT_LT(maxSpeed("renormalised"), 1e-12);
+    EXPECT_GT(maxSpeed("antisymmetric"), 1e-3);
     EXPECT_NE(out.find("G+{p} (5) (pressureGradient antisymmetric)"), std::string::npos) << out;
 
     // An unknown form: OpenFOAM's error naming the file and the valid words
-    const fileName bad = closedBox("difference", out);
+    const fileName bad =
+        closedBox("difference", "pressureGradient difference;", "hydrostatic", out);
     EXPECT_NE(run(bin + "wcsphFoam -case " + bad, out), 0) << out;
     EXPECT_NE(out.find("difference is not in enumeration"), std::string::npos) << out;
     EXPECT_NE(out.find("antisymmetric symmetric renormalised"), std::string::npos) << out;
+    EXPECT_NE(out.find("sphSchemes"), std::string::npos) << out;
+}
+
+
+TEST(wcsphFoamUsaw, waterInTensionStaysAtRestWithTensileInstabilityControl)
+{
+    // The closed box at a uniform p = -5000 Pa (p_b = 0): no free surface,
+    // so the tensile instability control takes G- (8) at every particle,
+    // zero for a constant to round-off, and the water stays at rest. G+
+    // (5) alone sets it moving (2 p G{1} (37) by the walls).
+    std::string out;
+    const std::string tension = "backgroundPressure 0;";
+    EXPECT_GT
+    (
+        closedBoxMaxSpeed("tensionPlus", tension, "uniform -5000", out), 1e-3
+    );
+    EXPECT_LT
+    (
+        closedBoxMaxSpeed
+        (
+            "tensionControlled", tension + "\\ntensileInstabilityControl yes;",
+            "uniform -5000", out
+        ),
+        1e-12
+    );
+    EXPECT_NE(out.find("tensile instability control, Sun et al. 2018"), std::string::npos)
+        << out;
+
+    // Only on G+: with another form an error naming the entry and the form
+    const fileName bad = closedBox
+    (
+        "tensionSymmetric",
+        "pressureGradient symmetric;\\ntensileInstabilityControl yes;",
+        "hydrostatic", out
+    );
+    EXPECT_NE(run(bin + "wcsphFoam -case " + bad, out), 0) << out;
+    EXPECT_NE(out.find("needs pressureGradient antisymmetric, not symmetric"),
+        std::string::npos) << out;
     EXPECT_NE(out.find("sphSchemes"), std::string::npos) << out;
 }
 

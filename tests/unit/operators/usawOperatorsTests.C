@@ -189,6 +189,51 @@ TEST(usawOperators, gradPlusMinusGradMinusIsTwiceAShiftGradient)
 }
 
 
+TEST(usawOperators, tensileControlTakesEachParticlesOwnForm)
+{
+    // The tensile instability control is G- (8) at the flagged particles
+    // and G+ (5) at the others, wall terms included: compared with the two
+    // operators term by term on a tank with walls (the same sums, so to
+    // round-off), every other particle flagged
+    sphTest::throwOnFatal();
+    latticeCase c(tank, 0.05, layout::nodal, vector2D(0, 0), vector2D(L, L));
+    const label n = c.size();
+    const scalarList A(randomList(n, 2));
+    List<bool> symmetric(n, false);
+    for (label a = 0; a < n; a += 2)
+    {
+        symmetric[a] = true;
+    }
+    List<vector2D> gp(n), gm(n), gt(n);
+    SPH::dispatch(*c.W, [&](const auto& K)
+    {
+        SPH::usaw::gradPlus(K, c.nbrs, *c.usaw, c.V, A, gp);
+        SPH::usaw::gradMinus(K, c.nbrs, *c.usaw, c.V, A, gm);
+        SPH::usaw::gradTensileControl(K, c.nbrs, *c.usaw, c.V, A, symmetric, gt);
+    });
+
+    label nWall = 0;
+    for (label a = 0; a < c.nbrs.size(); ++a)
+    {
+        nWall += c.usaw->gamma()[a] < 1;
+        EXPECT_LE(mag(gt[a] - (symmetric[a] ? gm[a] : gp[a])), 1e-12/c.W->h())
+            << "particle " << a << " at " << c.x[a];
+    }
+    EXPECT_GT(nWall, 10) << "the case must have particles by the walls";
+
+    // A flag list shorter than the targets is refused, not read past
+    const List<bool> shortFlags(c.nbrs.size() - 1, false);
+    SPH::dispatch(*c.W, [&](const auto& K)
+    {
+        EXPECT_THROW
+        (
+            SPH::usaw::gradTensileControl(K, c.nbrs, *c.usaw, c.V, A, shortFlags, gt),
+            Foam::error
+        );
+    });
+}
+
+
 TEST(usawOperators, gradPlusAndDivAreAdjointUpToWallTerms)
 {
     // Multiplying (5) by V_a gamma_a u_a and (9) by V_a gamma_a p_a and

@@ -164,6 +164,40 @@ inline void vectorGradMinusThen
     );
 }
 
+//- 1/gamma_a [sum_b V_b (s_a A_a + A_b) grad w_ab - sum_s (s_a A_a + A_s)
+//- grad gamma_as]: G+ (5) where s_a = 1, G- (8) where s_a = -1
+template<class Kernel, class Sign>
+inline void gradSigned
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const scalarUList& A,
+    const Sign& sign,
+    UList<vector2D>& result
+)
+{
+    const scalar* v = V.cdata();
+    const scalar* a = A.cdata();
+    const labelPair* ends = walls.segmentParticles().cdata();
+
+    sumOverNeighboursAndWalls
+    (
+        nbrs,
+        walls,
+        [&](const label i, const label j, const vector2D& rij, const scalar r)
+        {
+            return v[j]*(sign(i)*a[i] + a[j])*K.gradW(rij, r);
+        },
+        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
+        {
+            return -(sign(i)*a[i] + segmentValue(ends, a, s))*gradGammaAs;
+        },
+        result
+    );
+}
+
 } // End namespace detail
 } // End namespace usaw
 } // End namespace SPH
@@ -184,23 +218,37 @@ void Foam::SPH::usaw::gradPlus
 )
 {
     checkOperands("gradPlus", nbrs, walls, V.size(), {A.size()}, -1, result.size());
-    const scalar* v = V.cdata();
-    const scalar* a = A.cdata();
-    const labelPair* ends = walls.segmentParticles().cdata();
+    detail::gradSigned(K, nbrs, walls, V, A, [](const label) { return 1; }, result);
+}
 
-    // Eq. (5)
-    detail::sumOverNeighboursAndWalls
+
+template<class Kernel>
+void Foam::SPH::usaw::gradTensileControl
+(
+    const Kernel& K,
+    const neighbourList& nbrs,
+    const usawWalls& walls,
+    const scalarUList& V,
+    const scalarUList& A,
+    const UList<bool>& symmetric,
+    UList<vector2D>& result
+)
+{
+    checkOperands
     (
-        nbrs,
-        walls,
-        [&](const label i, const label j, const vector2D& rij, const scalar r)
-        {
-            return v[j]*(a[i] + a[j])*K.gradW(rij, r);
-        },
-        [&](const label i, const label s, const vector2D& gradGammaAs, const scalar)
-        {
-            return -(a[i] + detail::segmentValue(ends, a, s))*gradGammaAs;
-        },
+        "gradTensileControl", nbrs, walls, V.size(), {A.size()}, -1,
+        result.size()
+    );
+    checkOperands
+    (
+        "gradTensileControl", nbrs, walls, V.size(), {}, -1,
+        symmetric.size()
+    );
+    const bool* minus = symmetric.cdata();
+    detail::gradSigned
+    (
+        K, nbrs, walls, V, A,
+        [minus](const label a) { return minus[a] ? -1 : 1; },
         result
     );
 }

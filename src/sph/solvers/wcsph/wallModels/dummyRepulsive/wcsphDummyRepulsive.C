@@ -45,7 +45,11 @@ Foam::SPH::wcsphDummyRepulsive::wcsphDummyRepulsive
             << exit(FatalIOError);
     }
     // Entries of the USAW walls' momentum equation: not silently ignored
-    for (const word key : {"backgroundPressure", "pressureGradient"})
+    for
+    (
+        const word key
+      : {"backgroundPressure", "pressureGradient", "tensileInstabilityControl"}
+    )
     {
         if (schemes.found(key))
         {

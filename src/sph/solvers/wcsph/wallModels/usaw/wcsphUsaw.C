@@ -78,6 +78,18 @@ Foam::SPH::wcsphUsaw::wcsphUsaw
             projection::gradientForm::antisymmetric
         )
     ),
+    tensileControl_
+    (
+        schemes.getOrDefault<bool>("tensileInstabilityControl", false)
+    ),
+    freeSurfaceDivR_
+    (
+        checkedScalar
+        (
+            schemes, "freeSurfaceDivR", 1.5, {0, 2, true, true},
+            "(D{r} is 2 inside the fluid)"
+        )
+    ),
     wallX_(walls.points().size()),
     wallU_(walls.points().size()),
     wallAcceleration_(walls.points().size(), vector2D::zero)
@@ -86,6 +98,19 @@ Foam::SPH::wcsphUsaw::wcsphUsaw
     {
         FatalIOErrorInFunction(schemes.lookup("backgroundPressure"))
             << "Entry backgroundPressure " << pBackground_ << ": expected >= 0"
+            << exit(FatalIOError);
+    }
+    if
+    (
+        tensileControl_
+     && gradientForm_ != projection::gradientForm::antisymmetric
+    )
+    {
+        FatalIOErrorInFunction(schemes.lookup("tensileInstabilityControl"))
+            << "tensileInstabilityControl yes switches G+ (5) to G- (8) where"
+            << " the pressure is negative, so it needs pressureGradient"
+            << " antisymmetric, not "
+            << projection::gradientFormNames[gradientForm_]
             << exit(FatalIOError);
     }
 }
@@ -130,6 +155,11 @@ void Foam::SPH::wcsphUsaw::setUp()
         R_.setSize(n, tensor2D::I);
     }
     viscous_.setSize(n, vector2D::zero);
+    if (tensileControl_)
+    {
+        divR_.setSize(n);
+        symmetricGradient_.setSize(n, false);
+    }
 
     // A restart's segments where its vertex particles are
     moveWalls(runTime_.value());
@@ -245,6 +275,12 @@ void Foam::SPH::wcsphUsaw::describe(Ostream& os, const char* indent) const
     }
     os  << nl << indent << "momentum           -G{p + p_b}/rho, eq. (13), with "
         << projection::formDescription(gradientForm_)
+        << (
+               tensileControl_
+             ? ", G- (8) where p + p_b < 0 away from a free surface (tensile"
+               " instability control, Sun et al. 2018)"
+             : ""
+           )
         << ": background pressure p_b " << pBackground_ << ", gravity " << w.g
         << nl << indent << "viscosity          ";
     if (w.nut)

@@ -18,6 +18,60 @@ Description
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class Kernel>
+void Foam::SPH::wcsphUsaw::markTensileParticles(const Kernel& W)
+{
+    const wcsphWork& w = work_;
+    usaw::divPosition(W, w.nbrs, *usaw_, V_, divR_);
+
+    const label* off = w.nbrs.offsets().cdata();
+    const label* nbr = w.nbrs.indices().cdata();
+    const scalar* r = w.nbrs.r().cdata();
+    const label nF = w.nFluid;
+    const scalar nearSurface = 0.5*W.support(), divRMax = freeSurfaceDivR_;
+
+    #pragma omp parallel for schedule(static) if(SPH::worthThreads(nF))
+    for (label i = 0; i < nF; ++i)
+    {
+        bool tensile = pTotal_[i] < 0 && divR_[i] > divRMax;
+        for (label k = off[i]; k < off[i + 1] && tensile; ++k)
+        {
+            const label j = nbr[k];
+            tensile = !(j < nF && r[k] < nearSurface && divR_[j] <= divRMax);
+        }
+        symmetricGradient_[i] = tensile;
+    }
+}
+
+
+template<class Kernel>
+void Foam::SPH::wcsphUsaw::pressureGradient(const Kernel& W)
+{
+    const wcsphWork& w = work_;
+    if (tensileControl_)
+    {
+        markTensileParticles(W);
+        usaw::gradTensileControl
+        (
+            W, w.nbrs, *usaw_, V_, pTotal_, symmetricGradient_, gradP_
+        );
+        return;
+    }
+    if (gradientForm_ == projection::gradientForm::renormalised)
+    {
+        usaw::renormalisation
+        (
+            W, w.nbrs, *usaw_, V_, w.parts.positions(),
+            renormalisation::minMomentDet, R_
+        );
+    }
+    projection::gradient
+    (
+        gradientForm_, kernel_, w.nbrs, *usaw_, V_, R_, pTotal_, gradP_
+    );
+}
+
+
+template<class Kernel>
 void Foam::SPH::wcsphUsaw::fluidRates(const Kernel& W)
 {
     wcsphWork& w = work_;
@@ -34,18 +88,7 @@ void Foam::SPH::wcsphUsaw::fluidRates(const Kernel& W)
 
     // Leroy et al. 2014 eqs. (9), (5), (15)-(17)
     usaw::div(W, w.nbrs, *usaw_, V_, Uf, divU_);
-    if (gradientForm_ == projection::gradientForm::renormalised)
-    {
-        usaw::renormalisation
-        (
-            W, w.nbrs, *usaw_, V_, w.parts.positions(),
-            renormalisation::minMomentDet, R_
-        );
-    }
-    projection::gradient
-    (
-        gradientForm_, kernel_, w.nbrs, *usaw_, V_, R_, pTotal_, gradP_
-    );
+    pressureGradient(W);
     if (w.nut)
     {
         turbulentViscous(Uf);
