@@ -14,6 +14,7 @@ Description
     particle may be lost (the count of isolatedParticles at the first and
     last write). compare's share of the water above the wheel's axis
     must be there for both and below 5 % (the cups begin to lift water).
+    wcsphFoam must run with the tensile instability control.
 
 \*---------------------------------------------------------------------------*/
 
@@ -64,6 +65,16 @@ TEST(waterWheelTutorial, bothSolversEndAndTheBucketFeelsTheWater)
             table.at(solver + "_nFluid_first"), table.at(solver + "_nFluid_last")
         ) << solver;
     }
+
+    // The WCSPH case takes the tensile instability control (README.md): its
+    // log's momentum line names it
+    std::string wcsphLog;
+    sphTest::run("cat " + dir/"wcsph"/"log.wcsphFoam", wcsphLog);
+    EXPECT_NE
+    (
+        wcsphLog.find("tensile instability control, Sun et al. 2018"),
+        std::string::npos
+    );
 
     for (const char* png : {"wheel_t0.png", "bucketForce.png", "waterAboveAxis.png"})
     {
