@@ -5,6 +5,7 @@
 #include "wcsphShifting.H"
 #include "checkedEntry.H"
 #include "kernelDispatch.H"
+#include "freeSurfaceRegion.H"
 
 #include <cmath>
 
@@ -49,24 +50,24 @@ Foam::SPH::wcsphShifting::wcsphShifting
             "shiftVelocity", schemes, velocityScale::local
         )
     ),
+    // Section 3.2: "D{r} <= 1.5 in 2-D"
+    freeSurfaceDivR_
+    (
+        checkedScalar
+        (
+            schemes, "freeSurfaceDivR", 1.5, {0, 2, true, true},
+            "(D{r} is 2 inside the fluid)"
+        )
+    ),
     walls_(wallModel.operatorWalls()),
-    maxShift_(0)
+    maxShift_(0),
+    nSurface_(0)
 {
     if (!(coeff_ > 0))
     {
         FatalIOErrorInFunction(schemes.lookup("shiftCoeff"))
             << "Entry shiftCoeff " << coeff_ << ": expected > 0 (A of the"
             << " shift's D = A h U dt; 2 by default)" << exit(FatalIOError);
-    }
-    // Section 3.2: "D{r} <= 1.5 in 2-D"
-    const scalar divRMax =
-        schemes.getOrDefault<scalar>("freeSurfaceDivR", 1.5);
-    if (!(divRMax > 0 && divRMax < 2))
-    {
-        FatalIOErrorInFunction(schemes.lookup("freeSurfaceDivR"))
-            << "Entry freeSurfaceDivR " << divRMax << ": expected 0 <"
-            << " freeSurfaceDivR < 2 (D{r} is 2 inside the fluid)"
-            << exit(FatalIOError);
     }
     if (!walls_)
     {
@@ -78,7 +79,8 @@ Foam::SPH::wcsphShifting::wcsphShifting
     V_.setSize(mass_.size());
     D_.setSize(work.nFluid);
     gradF_.setSize(mass_.size());
-    checkConfined(schemes, divRMax);
+    divR_.setSize(mass_.size());
+    nearSurface_.setSize(work.nFluid);
 }
 
 
@@ -96,39 +98,23 @@ void Foam::SPH::wcsphShifting::prepare()
 }
 
 
-void Foam::SPH::wcsphShifting::checkConfined
-(
-    const dictionary& schemes,
-    const scalar divRMax
-)
+void Foam::SPH::wcsphShifting::freeSurfaceOff()
 {
-    prepare();
-    scalarList divR(work_.parts.size());
     dispatch(kernel_, [&](const auto& K)
     {
-        usaw::divPosition(K, work_.nbrs, *walls_, V_, divR);
+        usaw::divPosition(K, work_.nbrs, *walls_, V_, divR_);
     });
-    label nSurface = 0;
-    label first = -1;
+    nSurface_ = markFreeSurfaceRegion
+    (
+        work_.nbrs, work_.nFluid, divR_, freeSurfaceDivR_,
+        0.5*kernel_.support(), nearSurface_
+    );
     for (label i = 0; i < work_.nFluid; ++i)
     {
-        if (divR[i] <= divRMax)
+        if (nearSurface_[i])
         {
-            if (first < 0) first = i;
-            ++nSurface;
+            D_[i] = 0;
         }
-    }
-    if (nSurface)
-    {
-        FatalIOErrorInFunction(schemes.lookup("shifting"))
-            << "shifting yes needs a confined flow, but " << nSurface
-            << " fluid particles are on a free surface (D{r} <= " << divRMax
-            << ", Leroy et al. 2014 section 3.2; the first at "
-            << work_.parts.positions()[first] << ", D{r} " << divR[first]
-            << ")." << nl
-            << "wcsphFoam's shifting has no free-surface treatment (isphFoam"
-            << " switches it off near the surface): set 'shifting no;'"
-            << exit(FatalIOError);
     }
 }
 
@@ -140,7 +126,8 @@ void Foam::SPH::wcsphShifting::describe(Ostream& os) const
     os  << "Lind et al. 2012 with D = A h U dt of Skillen et al. 2013,"
         << " A = shiftCoeff " << coeff_ << ", U = "
         << (velocity_ == velocityScale::local ? "|u_a|" : "max |u|")
-        << "; G{1} (37), u and rho corrected by (38); confined flow"
+        << "; G{1} (37), u and rho corrected by (38); off within h q_max/2"
+        << " of a free surface (D{r} <= " << freeSurfaceDivR_ << ")"
         << (walls_ == noUsaw_.get() ? " (SPH sums over fluid and walls)" : "");
 }
 
@@ -168,6 +155,7 @@ void Foam::SPH::wcsphShifting::execute(const scalar dt)
         }
         D_ = coeff*std::sqrt(maxU2);
     }
+    freeSurfaceOff();
 
     dispatch(kernel_, [&](const auto& K)
     {

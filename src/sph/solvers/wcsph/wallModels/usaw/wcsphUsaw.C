@@ -158,6 +158,7 @@ void Foam::SPH::wcsphUsaw::setUp()
     if (tensileControl_)
     {
         divR_.setSize(n);
+        nearSurface_.setSize(w.nFluid);
         symmetricGradient_.setSize(n, false);
     }
 

@@ -14,6 +14,7 @@ Description
 #include "wcsphPairTerms.H"
 #include "usawOperators.H"
 #include "renormalisation.H"
+#include "freeSurfaceRegion.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -22,23 +23,14 @@ void Foam::SPH::wcsphUsaw::markTensileParticles(const Kernel& W)
 {
     const wcsphWork& w = work_;
     usaw::divPosition(W, w.nbrs, *usaw_, V_, divR_);
-
-    const label* off = w.nbrs.offsets().cdata();
-    const label* nbr = w.nbrs.indices().cdata();
-    const scalar* r = w.nbrs.r().cdata();
-    const label nF = w.nFluid;
-    const scalar nearSurface = 0.5*W.support(), divRMax = freeSurfaceDivR_;
-
-    #pragma omp parallel for schedule(static) if(SPH::worthThreads(nF))
-    for (label i = 0; i < nF; ++i)
+    markFreeSurfaceRegion
+    (
+        w.nbrs, w.nFluid, divR_, freeSurfaceDivR_, 0.5*W.support(),
+        nearSurface_
+    );
+    for (label i = 0; i < w.nFluid; ++i)
     {
-        bool tensile = pTotal_[i] < 0 && divR_[i] > divRMax;
-        for (label k = off[i]; k < off[i + 1] && tensile; ++k)
-        {
-            const label j = nbr[k];
-            tensile = !(j < nF && r[k] < nearSurface && divR_[j] <= divRMax);
-        }
-        symmetricGradient_[i] = tensile;
+        symmetricGradient_[i] = pTotal_[i] < 0 && !nearSurface_[i];
     }
 }
 
