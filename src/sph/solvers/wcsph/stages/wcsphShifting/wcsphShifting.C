@@ -56,7 +56,7 @@ Foam::SPH::wcsphShifting::wcsphShifting
         checkedScalar
         (
             schemes, "freeSurfaceDivR", 1.5, {0, 2, true, true},
-            "(D{r} is 2 inside the fluid)"
+            "D{r} is 2 inside the fluid"
         )
     ),
     walls_(wallModel.operatorWalls()),

@@ -87,7 +87,7 @@ Foam::SPH::wcsphUsaw::wcsphUsaw
         checkedScalar
         (
             schemes, "freeSurfaceDivR", 1.5, {0, 2, true, true},
-            "(D{r} is 2 inside the fluid)"
+            "D{r} is 2 inside the fluid"
         )
     ),
     wallX_(walls.points().size()),
