@@ -7,6 +7,7 @@
 #include "usawOperators.H"
 #include "kernelDispatch.H"
 #include "ghostSurface.H"
+#include "freeSurfaceRegion.H"
 #include "unitConversion.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -213,18 +214,11 @@ void Foam::SPH::freeSurface::execute(const scalar dt)
 
     // Particles within h q_max/2 of the free surface are not shifted
     // (section 3.2, after eq. (37))
-    const scalar near = 0.5*w.W.support();
-    label* nearSurface = w.nearSurface.data();
-    #pragma omp parallel for schedule(static) if(SPH::worthThreads(nFluid))
-    for (label i = 0; i < nFluid; ++i)
-    {
-        label isNear = surface[i];
-        for (label k = off[i]; k < off[i + 1] && !isNear; ++k)
-        {
-            isNear = surface[nbr[k]] && r[k] < near;
-        }
-        nearSurface[i] = isNear;
-    }
+    markNearSurface
+    (
+        w.nbrs, nFluid, [=](const label b) { return surface[b] != 0; },
+        0.5*w.W.support(), w.nearSurface
+    );
 
     if (w.ghostSurface)
     {

@@ -50,6 +50,8 @@ Foam::SPH::wcsphShifting::wcsphShifting
             "shiftVelocity", schemes, velocityScale::local
         )
     ),
+    walls_(wallModel.operatorWalls()),
+    maxShift_(0),
     // Section 3.2: "D{r} <= 1.5 in 2-D"
     freeSurfaceDivR_
     (
@@ -59,8 +61,6 @@ Foam::SPH::wcsphShifting::wcsphShifting
             "D{r} is 2 inside the fluid"
         )
     ),
-    walls_(wallModel.operatorWalls()),
-    maxShift_(0),
     nSurface_(0),
     hasFreeSurface_(true)
 {

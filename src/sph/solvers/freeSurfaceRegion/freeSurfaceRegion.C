@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "freeSurfaceRegion.H"
-#include "openMPThreshold.H"
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
@@ -14,7 +13,7 @@ Foam::label Foam::SPH::markFreeSurfaceRegion
     const scalarUList& divR,
     const scalar divRMax,
     const scalar reach,
-    UList<bool>& near
+    labelUList& near
 )
 {
     if (nbrs.size() < nFluid || divR.size() < nFluid || near.size() < nFluid)
@@ -24,26 +23,17 @@ Foam::label Foam::SPH::markFreeSurfaceRegion
             << ", " << divR.size() << " D{r} and " << near.size()
             << " flags" << exit(FatalError);
     }
-    const label* off = nbrs.offsets().cdata();
-    const label* nbr = nbrs.indices().cdata();
-    const scalar* r = nbrs.r().cdata();
     const scalar* D = divR.cdata();
-    bool* flag = near.data();
+    const auto onSurface = [=](const label b)
+    {
+        return b < nFluid && D[b] <= divRMax;
+    };
+    markNearSurface(nbrs, nFluid, onSurface, reach, near);
 
     label nSurface = 0;
-    #pragma omp parallel for schedule(static) reduction(+:nSurface) \
-        if(SPH::worthThreads(nFluid))
     for (label a = 0; a < nFluid; ++a)
     {
-        const bool onSurface = D[a] <= divRMax;
-        bool nearSurface = onSurface;
-        for (label k = off[a]; k < off[a + 1] && !nearSurface; ++k)
-        {
-            const label b = nbr[k];
-            nearSurface = b < nFluid && r[k] < reach && D[b] <= divRMax;
-        }
-        flag[a] = nearSurface;
-        nSurface += onSurface;
+        nSurface += onSurface(a);
     }
     return nSurface;
 }
