@@ -13,7 +13,10 @@ Description
 
     Cases: the ISPH-USAW cavity with ILU0 and with BoomerAMG, the periodic
     Poiseuille flow of both solvers (meanVelocityForce), and the Zhou
-    dam-break (WCSPH) at 12 particles per H.
+    dam-break (WCSPH) at 12 particles per H; and both solvers with the
+    fluid particles sorted by cell (particleSortInterval) every 3 (ISPH)
+    or 7 (WCSPH) steps between the writes, the leapfrog's rates carried
+    across the sorts.
 
 \*---------------------------------------------------------------------------*/
 
@@ -162,3 +165,29 @@ TEST(restartExact, wcsphZhouUnderEveryWriteControl)
 
 
 // ************************************************************************* //
+
+
+TEST(restartExact, particlesSortedByCellBetweenWrites)
+{
+    {
+        SCOPED_TRACE("isphFoam, BoomerAMG");
+        const fileName dir = cavity("restartCavitySorted");
+        std::string out;
+        run
+        (
+            "sed -i 's/^        preconditioner .*/        preconditioner  BoomerAMG;"
+            " reuse 10;/' " + dir/"system"/"sphSolution", out
+        );
+        setEntry(dir/"system"/"sphSchemes", "particleSortInterval", "3");
+        writes(dir, "timeStep", "2");
+        EXPECT_NE(sphTest::expectRestartsReproduce("isphFoam", dir), "");
+    }
+    {
+        SCOPED_TRACE("wcsphFoam, leapfrog");
+        const fileName dir = zhou("restartZhouSorted");
+        setEntry(dir/"system"/"sphSchemes", "timeScheme", "leapfrog");
+        setEntry(dir/"system"/"sphSchemes", "particleSortInterval", "7");
+        writes(dir, "timeStep", "37");
+        EXPECT_NE(sphTest::expectRestartsReproduce("wcsphFoam", dir), "");
+    }
+}

@@ -162,16 +162,54 @@ TEST(solverInputs, restartFieldErrorsNameTheirFile)
     // NaN in U was reported as a "non-finite position", with no file
     std::string time, out;
     fileName dir = sphTest::restartCase("isph", "inputs.restartUNaN", time);
+    // (the particles are renumbered as they move: particle 3 has its id)
+    const std::string id3 = std::to_string(sphTest::peekRestart<label>(dir, time, "id", 3));
     sphTest::pokeRestart<vector2D>(dir, time, "U", 3, vector2D(0, std::nan("")));
     sphTest::solverRun r = sphTest::runSolver("isphFoam", dir);
-    expectError(r, {time + "/lagrangian/sph/U", "particle 3 (id 3) holds (0 nan)"});
+    expectError(r, {time + "/lagrangian/sph/U", "particle 3 (id " + id3 + ") holds (0 nan)"});
     EXPECT_FALSE(r.has("non-finite position")) << r.tail();
 
     dir = sphTest::restartCase("wcsph", "inputs.restartDuplicateId", time);
-    sphTest::pokeRestart<label>(dir, time, "id", 5, 2);
+    const label id2 = sphTest::peekRestart<label>(dir, time, "id", 2);
+    sphTest::pokeRestart<label>(dir, time, "id", 5, id2);
     r = sphTest::runSolver("wcsphFoam", dir);
-    expectError(r, {time + "/lagrangian/sph/id", "particle 5 (id 2) has the id of particle 2"});
+    expectError
+    (
+        r,
+        {
+            time + "/lagrangian/sph/id",
+            "particle 5 (id " + std::to_string(id2) + ") has the id of particle 2"
+        }
+    );
 }
 
 
 // ************************************************************************* //
+
+
+TEST(solverInputs, particleSortIntervalMustBeAWholeNumberOfSteps)
+{
+    for (const std::string solver : {"wcsph", "isph"})
+    {
+        SCOPED_TRACE(solver);
+        const std::string sort = "echo 'particleSortInterval ";
+        expectError
+        (
+            runEdited(solver, "sortHalf", sort + "2.5;' >> system/sphSchemes"),
+            {"Entry particleSortInterval 2.5", "whole number", "system/sphSchemes"}
+        );
+        expectError
+        (
+            runEdited(solver, "sortNegative", sort + "-1;' >> system/sphSchemes"),
+            {"Entry particleSortInterval -1", "system/sphSchemes"}
+        );
+        // The default is logged with the stages; 0 switches it off
+        const sphTest::solverRun on = runEdited(solver, "sortDefault", "true");
+        EXPECT_EQ(on.status, 0) << on.tail();
+        EXPECT_TRUE(on.has("renumbered cell by cell every 20 steps")) << on.tail();
+        const sphTest::solverRun off =
+            runEdited(solver, "sortOff", sort + "0;' >> system/sphSchemes");
+        EXPECT_EQ(off.status, 0) << off.tail();
+        EXPECT_FALSE(off.has("renumbered cell by cell")) << off.tail();
+    }
+}

@@ -219,3 +219,50 @@ TEST(particles, sizeMismatchIsAnErrorNamingTheFile)
             << e.message();
     }
 }
+
+
+TEST(particles, reorderMovesEveryFieldAndKeepsTheTailAndStorage)
+{
+    sphTest::throwOnFatal();
+    auto runTime = sphTest::makeTime(sphTest::makeCase("particlesReorder"));
+    particles parts(*runTime, "0");
+    fill(parts, 10);
+    parts.add<scalar>("scratch", 0, false);
+    forAll(parts.positions(), i) { parts.field<scalar>("scratch")[i] = i; }
+
+    const List<vector2D> x0(parts.positions());
+    const List<vector2D> U0(parts.field<vector2D>("U"));
+    const scalarList p0(parts.field<scalar>("p"));
+    const labelList id0(parts.field<label>("id"));
+    const vector2D* storage = parts.positions().cdata();
+
+    // The first 6 particles reversed; 6 .. 9 untouched
+    const labelList oldOfNew({5, 4, 3, 2, 1, 0});
+    parts.reorder(oldOfNew);
+
+    EXPECT_EQ(parts.positions().cdata(), storage);
+    for (label k = 0; k < 10; ++k)
+    {
+        const label old = k < 6 ? oldOfNew[k] : k;
+        EXPECT_EQ(parts.positions()[k], x0[old]) << k;
+        EXPECT_EQ(parts.field<vector2D>("U")[k], U0[old]) << k;
+        EXPECT_EQ(parts.field<scalar>("p")[k], p0[old]) << k;
+        EXPECT_EQ(parts.field<label>("id")[k], id0[old]) << k;
+        EXPECT_EQ(parts.field<scalar>("scratch")[k], scalar(old)) << k;
+    }
+
+    // Not a permutation: a repeated index, one out of range, too many
+    for (const labelList& bad : {labelList({0, 0, 1}), labelList({0, 3, 1}), labelList(11, 0)})
+    {
+        try
+        {
+            parts.reorder(bad);
+            FAIL() << "a reordering that is not a permutation was accepted";
+        }
+        catch (const Foam::error& e)
+        {
+            EXPECT_NE(std::string(e.message()).find("particles"), std::string::npos)
+                << e.message();
+        }
+    }
+}

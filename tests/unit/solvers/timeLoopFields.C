@@ -18,6 +18,7 @@ Description
 #include "vtkParticleFile.H"
 #include "vtkPolyFileReader.H"
 #include "testCase.H"
+#include "Random.H"
 
 #include <gtest/gtest.h>
 #include <cmath>
@@ -131,6 +132,7 @@ public:
     const SPH::sphCloud& cloud() const override { return *cloud_; }
     SPH::sphCloud& cloud() override { return *cloud_; }
     scalar maxDeltaT() const override { return 0.1; }
+    void particlesReordered(const labelUList&) override {}
 
     void write() const override
     {
@@ -264,3 +266,72 @@ TEST(timeLoop, registeredFieldIsRolledBackWrittenToVTKAndRestarted)
 
 
 // ************************************************************************* //
+
+
+TEST(sphCloud, sortFluidByCellOrdersTheFluidAndLeavesTheWalls)
+{
+    auto runTime = sphTest::makeTime(sphTest::makeCase("cloudSortByCell"));
+    autoPtr<SPH::kernel> W
+    (
+        SPH::kernel::New(sphTest::dict("kernel wendlandC2; hByDr 2;"), 0.05)
+    );
+    SPH::wallMesh walls(wordList({"floor"}), floor(), 0.05);
+    SPH::particles parts(*runTime, runTime->timeName());
+    parts.add<vector2D>("U");
+    parts.add<label>("id");
+
+    // 200 fluid particles scattered over the box, then 5 wall particles
+    const label nFluid = 200;
+    parts.resize(nFluid + 5);
+    Random rnd(7);
+    forAll(parts.positions(), i)
+    {
+        parts.positions()[i] =
+            vector2D(rnd.sample01<scalar>(), rnd.sample01<scalar>());
+        parts.field<vector2D>("U")[i] = 2*parts.positions()[i];
+        parts.field<label>("id")[i] = i;
+    }
+    const List<vector2D> x0(parts.positions());
+    SPH::sphCloud cloud
+    (
+        *runTime, parts, *W, walls, nFluid, 0.05, 1000, vector2D::zero,
+        SPH::domain(vector2D(-0.1, -0.2), vector2D(1.1, 1.1))
+    );
+
+    const labelList oldOfNew(cloud.sortFluidByCell());
+    ASSERT_EQ(oldOfNew.size(), nFluid);
+
+    const SPH::cellLinkedList& cells = cloud.cells();
+    const vector2DField& x = parts.positions();
+    const labelField& id = parts.field<label>("id");
+    for (label k = 0; k < nFluid; ++k)
+    {
+        // Each particle kept its own fields: id, position and U together
+        EXPECT_EQ(id[k], oldOfNew[k]);
+        EXPECT_EQ(x[k], x0[oldOfNew[k]]);
+        EXPECT_EQ(parts.field<vector2D>("U")[k], 2*x[k]);
+        if (k > 0)
+        {
+            // Cell by cell, ascending old index within a cell
+            const label c0 = cells.cellIndex(x[k - 1]);
+            const label c1 = cells.cellIndex(x[k]);
+            EXPECT_TRUE(c0 < c1 || (c0 == c1 && id[k - 1] < id[k])) << k;
+        }
+    }
+    for (label i = nFluid; i < x.size(); ++i)
+    {
+        EXPECT_EQ(id[i], i);
+        EXPECT_EQ(x[i], x0[i]);
+    }
+
+    // The cell list was rebuilt on the new numbering
+    label nListed = 0;
+    forAll(x, i)
+    {
+        cells.forEachNeighbour(x[i], 1e-12, [&](const label j, const vector2D&, const scalar)
+        {
+            nListed += (j == i);
+        });
+    }
+    EXPECT_EQ(nListed, x.size());
+}

@@ -85,6 +85,24 @@ void Foam::SPH::sphCloud::updateCells()
 }
 
 
+const Foam::labelList& Foam::SPH::sphCloud::sortFluidByCell()
+{
+    updateCells();
+    oldOfNew_.setSize(nFluid_);
+    label k = 0;
+    for (const label i : cells_.sortedIndex())
+    {
+        if (i < nFluid_)
+        {
+            oldOfNew_[k++] = i;
+        }
+    }
+    particles_.reorder(oldOfNew_);
+    updateCells();
+    return oldOfNew_;
+}
+
+
 Foam::label Foam::SPH::sphCloud::layOut
 (
     const Time& runTime,

@@ -6,6 +6,8 @@
 #include "Time.H"
 #include "OSspecific.H"
 
+#include <vector>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::fileName Foam::SPH::particles::defaultLocal("lagrangian/sph");
@@ -138,6 +140,35 @@ void Foam::SPH::particles::append(const particles& other)
             copyTail(field<label>(name), other.field<label>(name));
         }
     }
+}
+
+
+void Foam::SPH::particles::reorder(const labelUList& oldOfNew)
+{
+    const label n = oldOfNew.size();
+    if (n < 0 || n > size_)
+    {
+        FatalErrorInFunction
+            << "A reordering of " << n << " particles for a set of " << size_
+            << " in " << path() << exit(FatalError);
+    }
+    std::vector<bool> taken(std::size_t(n), false);
+    for (const label i : oldOfNew)
+    {
+        if (i < 0 || i >= n || taken[i])
+        {
+            FatalErrorInFunction
+                << "The reordering of the first " << n << " particles of "
+                << path() << " is not a permutation: index " << i
+                << exit(FatalError);
+        }
+        taken[i] = true;
+    }
+
+    reorderField(*positions_, oldOfNew);
+    forAllIters(scalars_, iter) { reorderField(**iter, oldOfNew); }
+    forAllIters(vectors_, iter) { reorderField(**iter, oldOfNew); }
+    forAllIters(labels_, iter) { reorderField(**iter, oldOfNew); }
 }
 
 

@@ -50,6 +50,21 @@ Foam::Field<Type>& Foam::SPH::particles::add
 
 
 template<class Type>
+void Foam::SPH::particles::reorderField
+(
+    UList<Type>& fld,
+    const labelUList& oldOfNew
+)
+{
+    const List<Type> old(SubList<Type>(fld, oldOfNew.size()));
+    forAll(oldOfNew, k)
+    {
+        fld[k] = old[oldOfNew[k]];
+    }
+}
+
+
+template<class Type>
 void Foam::SPH::particles::readField(const word& name)
 {
     // The old field (if any) leaves the registry before its successor enters

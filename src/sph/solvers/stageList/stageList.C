@@ -44,6 +44,15 @@ void Foam::SPH::stageList::printStep(Ostream& os) const
 }
 
 
+void Foam::SPH::stageList::expireReuse() const
+{
+    for (const stage& s : *this)
+    {
+        s.expireReuse();
+    }
+}
+
+
 Foam::scalar Foam::SPH::stageList::seconds() const
 {
     scalar total = 0;

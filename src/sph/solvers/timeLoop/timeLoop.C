@@ -42,7 +42,10 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     ),
     nRetries_(0),
     nRescued_(0),
-    writeTimeIndexStart_(0)
+    writeTimeIndexStart_(0),
+    sortInterval_(0),
+    nSorts_(0),
+    sortCpuSeconds_(0)
 {
     checkTimeControls(runTime);
     minDeltaTFraction_ = checkedScalar
@@ -50,11 +53,29 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
         schemes_, "minDeltaTFraction", minDeltaTFraction_, {0, 1, false, true},
         "of the first time step, below which a step has collapsed"
     );
+    readSortInterval();
     readState();
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::timeLoop::readSortInterval()
+{
+    const scalar n = checkedScalar
+    (
+        schemes_, "particleSortInterval", 20, {0, labelMax},
+        "time steps between sorts of the fluid particles by cell (0: never)"
+    );
+    sortInterval_ = label(n);
+    if (sortInterval_ != n)
+    {
+        FatalIOErrorInFunction(schemes_)
+            << "Entry particleSortInterval " << n << ": expected a whole"
+            << " number of time steps (0: never)" << exit(FatalIOError);
+    }
+}
+
 
 void Foam::SPH::timeLoop::readState()
 {
@@ -428,7 +449,14 @@ void Foam::SPH::timeLoop::run()
              + Foam::name(maxRetries_) + " times, then the"
              : string("the")
            ).c_str()
-        << " last good state is written" << nl << endl;
+        << " last good state is written" << nl;
+    if (sortInterval_ > 0)
+    {
+        Info<< "    particle order      fluid particles renumbered cell by"
+            << " cell every " << sortInterval_
+            << " steps (particleSortInterval)" << nl;
+    }
+    Info<< endl;
 
     const bool adjustTimeStep =
         runTime_.controlDict().getOrDefault<bool>("adjustTimeStep", false);
@@ -444,6 +472,13 @@ void Foam::SPH::timeLoop::run()
 
     while (runTime_.run())
     {
+        if (sortInterval_ > 0 && runTime_.timeIndex() % sortInterval_ == 0)
+        {
+            const scalar cpu0 = stage::processCpuSeconds();
+            solver_.sortParticles();
+            sortCpuSeconds_ += stage::processCpuSeconds() - cpu0;
+            ++nSorts_;
+        }
         if (adjustTimeStep)
         {
             runTime_.setDeltaT(nextDeltaT());
@@ -483,6 +518,11 @@ void Foam::SPH::timeLoop::run()
         Info<< "Steps retried with half the time step (retryOnFailure "
             << maxRetries_ << "): " << nRetries_ << " retries, " << nRescued_
             << " steps rescued" << nl;
+    }
+    if (sortInterval_ > 0)
+    {
+        Info<< "Fluid particles sorted by cell: " << nSorts_ << " times, "
+            << sortCpuSeconds_ << " s of CPU" << nl;
     }
     solver_.printTimes();
     Info<< "End" << nl << endl;

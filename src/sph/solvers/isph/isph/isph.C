@@ -468,9 +468,9 @@ void Foam::SPH::isph::write() const
         vtk.writeWalls(wallFile, runTime_.timeIndex(), runTime_.value());
     }
 
-    // A restart from this time builds a new multigrid hierarchy: so does
+    // A restart from this time builds new multigrid hierarchies: so does
     // the run going on
-    pressure_->solver().expirePreconditioner();
+    stages_.expireReuse();
 }
 
 

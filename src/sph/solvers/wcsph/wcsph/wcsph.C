@@ -383,6 +383,18 @@ void Foam::SPH::wcsph::afterStep(const scalar dt)
 }
 
 
+void Foam::SPH::wcsph::particlesReordered(const labelUList& oldOfNew)
+{
+    listBuilt_ = false;
+    // Rates of the state, if any, are evaluated again on the new numbering
+    ratesCurrent_ = false;
+    // The leapfrog's predictor takes the last corrector's rates: reordered
+    // with their particles, not evaluated again (an evaluation is its step)
+    particles::reorderField(work_.dUdt, oldOfNew);
+    particles::reorderField(work_.drhodt, oldOfNew);
+}
+
+
 void Foam::SPH::wcsph::saveState(const particles::snapshot& start)
 {
     if (bodyForces_) bodyForces_->save();
