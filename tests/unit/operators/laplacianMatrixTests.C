@@ -323,3 +323,40 @@ TEST(laplacianMatrix, extensionAndCopyRowsContinueTheField)
 
 
 // ************************************************************************* //
+
+
+TEST(laplacianMatrix, rowSortIsStdSortForNearlySortedAndShuffledRows)
+{
+    // sortRow's insertion (nearly ascending rows) and its fallback to
+    // std::sort (rows far from order) give std::sort's order exactly,
+    // duplicate columns included, so the sums of a row do not change
+    std::mt19937 gen(5);
+    std::uniform_int_distribution<int> column(0, 80);
+    std::uniform_real_distribution<double> value(-1, 1);
+    for (int trial = 0; trial < 300; ++trial)
+    {
+        SPH::laplacianMatrix::matrixRow row(1 + trial % 70);
+        for (auto& e : row)
+        {
+            e = {column(gen), value(gen)};
+        }
+        // A third shuffled, a third ascending but for a few swaps (the
+        // diagonal at the end, as a row is built), a third descending
+        if (trial % 3 == 1)
+        {
+            std::sort(row.begin(), row.end());
+            for (int s = 0; s < 3 && row.size() > 1; ++s)
+            {
+                std::swap(row[gen() % row.size()], row.back());
+            }
+        }
+        else if (trial % 3 == 2)
+        {
+            std::sort(row.rbegin(), row.rend());
+        }
+        SPH::laplacianMatrix::matrixRow expected(row);
+        std::sort(expected.begin(), expected.end());
+        SPH::laplacianMatrix::sortRow(row);
+        ASSERT_EQ(row, expected) << "trial " << trial;
+    }
+}
