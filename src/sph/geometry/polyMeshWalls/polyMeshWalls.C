@@ -68,7 +68,8 @@ Foam::SPH::polyMeshWalls::polyMeshWalls
                 << exit(FatalError);
         }
         const polyPatch& pp = bm[patchi];
-        const vectorField& n = pp.faceAreas();
+        // faceAreas() returns a SubField by value: keep it, not a reference
+        const vectorField::subField n = pp.faceAreas();
         forAll(pp, facei)
         {
             // The two corners of the face in the back plane
