@@ -322,8 +322,6 @@ TEST(laplacianMatrix, extensionAndCopyRowsContinueTheField)
 }
 
 
-// ************************************************************************* //
-
 
 TEST(laplacianMatrix, rowSortIsStdSortForNearlySortedAndShuffledRows)
 {
@@ -360,3 +358,6 @@ TEST(laplacianMatrix, rowSortIsStdSortForNearlySortedAndShuffledRows)
         ASSERT_EQ(row, expected) << "trial " << trial;
     }
 }
+
+
+// ************************************************************************* //

@@ -4,6 +4,7 @@
 
 #include "neighbourList.H"
 #include "openMPThreshold.H"
+#include "sortNearlyAscending.H"
 #include "error.H"
 
 #include <algorithm>
@@ -233,16 +234,14 @@ void Foam::SPH::neighbourList::fillSelected
                 }
             }
             // The wide list is in its build's order, which the points'
-            // small moves since have hardly changed: insertion sort
-            for (size_t a = 1; !sorted && a < kept.size(); ++a)
+            // small moves since have hardly changed (keys are unique)
+            if (!sorted)
             {
-                const pair p = kept[a];
-                size_t b = a;
-                for (; b > 0 && kept[b - 1].key > p.key; --b)
-                {
-                    kept[b] = kept[b - 1];
-                }
-                kept[b] = p;
+                sortNearlyAscending
+                (
+                    kept,
+                    [](const pair& p, const pair& q) { return p.key < q.key; }
+                );
             }
             label m = off[i];
             for (const pair& p : kept)

@@ -3,10 +3,12 @@
 \*---------------------------------------------------------------------------*/
 
 #include "laplacianMatrix.H"
+#include "sortNearlyAscending.H"
 #include "openMPThreshold.H"
 #include "error.H"
 
 #include <algorithm>
+#include <functional>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -109,30 +111,9 @@ Foam::SPH::laplacianMatrix::view(const scalarUList& S) const
 
 void Foam::SPH::laplacianMatrix::sortRow(matrixRow& row)
 {
-    // The neighbours come in the cell list's order, nearly ascending when
-    // the particles are sorted by cell (particleSortInterval): insertion
-    // then costs a move per entry out of place. A row far from order (the
-    // budget of moves spent) is left to std::sort. Both give the one
-    // ascending order of the pairs, so the sums of compress() are the same
-    const std::size_t n = row.size();
-    std::size_t budget = 2*n;
-    for (std::size_t k = 1; k < n; ++k)
-    {
-        const std::pair<int, scalar> entry = row[k];
-        std::size_t m = k;
-        while (m > 0 && entry < row[m - 1] && budget > 0)
-        {
-            row[m] = row[m - 1];
-            --m;
-            --budget;
-        }
-        row[m] = entry;
-        if (budget == 0)
-        {
-            std::sort(row.begin(), row.end());
-            return;
-        }
-    }
+    // The pairs' own order is total up to equal pairs, so this is
+    // std::sort's order and the sums of compress() do not change
+    sortNearlyAscending(row, std::less<std::pair<int, scalar>>());
 }
 
 
