@@ -15,6 +15,7 @@ Description
 #include "testCase.H"
 #include "linearSolver.H"
 #include "ILU0.H"
+#include "BoomerAMG.H"
 #include "OStringStream.H"
 
 #include <Eigen/SparseLU>
@@ -39,6 +40,44 @@ namespace
                 if (i < n - 1) t.emplace_back(id(i, j), id(i + 1, j), -1/(h*h));
                 if (j > 0) t.emplace_back(id(i, j), id(i, j - 1), -1/(h*h));
                 if (j < n - 1) t.emplace_back(id(i, j), id(i, j + 1), -1/(h*h));
+            }
+        }
+        SPH::sparseMatrix A(n*n, n*n);
+        A.setFromTriplets(t.begin(), t.end());
+        return A;
+    }
+
+    //- n x n lattice, each node coupled to those within 2.5 spacings with
+    //- a Wendland-like weight, as an SPH Laplacian row (about 20 entries,
+    //- most of them small); the missing neighbours beyond the edges go
+    //- to the diagonal, which makes it nonsingular
+    SPH::sparseMatrix wideStencilMatrix(const label n)
+    {
+        std::vector<Eigen::Triplet<scalar>> t;
+        const label reach = 2;
+        const scalar radius = 2.5;
+        auto id = [n](label i, label j) { return int(i + n*j); };
+        for (label j = 0; j < n; ++j)
+        {
+            for (label i = 0; i < n; ++i)
+            {
+                scalar diagonal = 0;
+                for (label dj = -reach; dj <= reach; ++dj)
+                {
+                    for (label di = -reach; di <= reach; ++di)
+                    {
+                        const scalar q = std::hypot(di, dj)/radius;
+                        if ((di == 0 && dj == 0) || q >= 1) continue;
+                        const scalar w = std::pow(1 - q, 4)*(1 + 4*q);
+                        diagonal += w;
+                        const label k = i + di, l = j + dj;
+                        if (k >= 0 && k < n && l >= 0 && l < n)
+                        {
+                            t.emplace_back(id(i, j), id(k, l), -w);
+                        }
+                    }
+                }
+                t.emplace_back(id(i, j), id(i, j), diagonal);
             }
         }
         SPH::sparseMatrix A(n*n, n*n);
@@ -230,6 +269,8 @@ TEST_F(linearSolvers, BoomerAMGControlsAreWrittenAndChecked)
     EXPECT_NE(settings.str().find("BoomerAMG (PMIS, extendedI interpolation,"
         " l1GaussSeidel x2, strongThreshold 0.5"), std::string::npos)
         << settings.str();
+    EXPECT_NE(settings.str().find(", filterTolerance 0.25)"), std::string::npos)
+        << settings.str();
 
     const SPH::sparseMatrix A = gridMatrix(30, 0);
     const SPH::vectorN b = rhs(A.rows());
@@ -241,7 +282,8 @@ TEST_F(linearSolvers, BoomerAMGControlsAreWrittenAndChecked)
         const char* bad :
         {
             "strongThreshold 1.5;", "nSweeps 0;", "coarsening CLJP;",
-            "smoother chebyshev;", "aggressiveLevels -1;", "reuse 0;"
+            "smoother chebyshev;", "aggressiveLevels -1;", "reuse 0;",
+            "filterTolerance 1;", "filterTolerance -0.1;"
         }
     )
     {
@@ -268,6 +310,80 @@ TEST_F(linearSolvers, BoomerAMGControlsAreWrittenAndChecked)
             ) << bad << ": " << msg;
         }
     }
+}
+
+
+TEST_F(linearSolvers, BoomerAMGFilterLumpsSmallEntriesIntoTheDiagonal)
+{
+    // Row 0: entries below 0.25 x 2 go to the diagonal; row 1 has no
+    // diagonal entry and is kept whole; row 2 is a Dirichlet row
+    const std::vector<int> start{0, 5, 7, 8};
+    const std::vector<int> columns{0, 1, 2, 3, 4, 0, 2, 2};
+    const std::vector<scalar> values{4, -2, -1, -0.1, 0.05, -1, 3, 1};
+    const SPH::BoomerAMG::compressedRows f = SPH::BoomerAMG::filtered
+    (
+        3, start.data(), columns.data(), values.data(), 0.25
+    );
+    EXPECT_EQ(f.start, (std::vector<int>{0, 3, 5, 6}));
+    EXPECT_EQ(f.columns, (std::vector<int>{0, 1, 2, 0, 2, 2}));
+    ASSERT_EQ(f.values.size(), 6u);
+    EXPECT_DOUBLE_EQ(f.values[0], 4 - 0.1 + 0.05);
+    EXPECT_EQ(f.values[1], -2);
+    EXPECT_EQ(f.values[2], -1);
+    EXPECT_EQ(f.values[3], -1);
+    EXPECT_EQ(f.values[4], 3);
+    EXPECT_EQ(f.values[5], 1);
+
+    // The row sums (a Laplacian's constant null space) are kept
+    const SPH::sparseMatrix A = wideStencilMatrix(20);
+    const SPH::BoomerAMG::compressedRows g = SPH::BoomerAMG::filtered
+    (
+        A.rows(), A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr(), 0.25
+    );
+    EXPECT_LT(g.columns.size(), 0.6*A.nonZeros());
+    for (Eigen::Index i = 0; i < A.rows(); ++i)
+    {
+        scalar sumA = 0, sumF = 0;
+        for (int k = A.outerIndexPtr()[i]; k < A.outerIndexPtr()[i + 1]; ++k)
+        {
+            sumA += A.valuePtr()[k];
+        }
+        for (int k = g.start[i]; k < g.start[i + 1]; ++k)
+        {
+            sumF += g.values[k];
+        }
+        EXPECT_NEAR(sumF, sumA, 1e-12) << "row " << i;
+    }
+}
+
+
+TEST_F(linearSolvers, BoomerAMGOnTheFilteredMatrixGivesTheSameAnswer)
+{
+    // The hierarchy of the filtered matrix preconditions the whole one:
+    // the answer is the same, the iterations about the same
+    const SPH::sparseMatrix A = wideStencilMatrix(60);
+    const SPH::vectorN b = rhs(A.rows());
+    SPH::vectorN x[2];
+    label nIter[2];
+    const char* filters[2] = {"0", "0.25"};
+    for (int k = 0; k < 2; ++k)
+    {
+        const auto s = makeSolver
+        (
+            std::string("solver BiCGStab; preconditioner BoomerAMG;"
+            " tolerance 1e-10; filterTolerance ") + filters[k] + ";"
+        );
+        x[k] = SPH::vectorN::Zero(A.rows());
+        const solverPerformance perf = s->solve(A, b, x[k]);
+        EXPECT_TRUE(perf.converged()) << filters[k];
+        EXPECT_LT((b - A*x[k]).norm()/b.norm(), 1e-10) << filters[k];
+        nIter[k] = perf.nIterations();
+        EXPECT_EQ(s->preconditionerEntriesKept() < 1, k == 1);
+    }
+    std::cout << "    BiCGStab iterations, filterTolerance 0 and 0.25: "
+        << nIter[0] << ' ' << nIter[1] << std::endl;
+    EXPECT_LT((x[1] - x[0]).norm()/x[0].norm(), 1e-8);
+    EXPECT_LE(nIter[1], nIter[0] + 3);
 }
 
 

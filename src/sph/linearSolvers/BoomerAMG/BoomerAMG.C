@@ -9,6 +9,8 @@
 #include <HYPRE.h>
 #include <HYPRE_parcsr_ls.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <numeric>
 #include <type_traits>
@@ -177,6 +179,53 @@ Foam::SPH::BoomerAMG::hierarchy::hypreObjects::hypreObjects
 }
 
 
+Foam::SPH::BoomerAMG::compressedRows Foam::SPH::BoomerAMG::filtered
+(
+    const Eigen::Index n,
+    const int* rowStart,
+    const int* columns,
+    const scalar* values,
+    const scalar tolerance
+)
+{
+    compressedRows f;
+    f.start.reserve(n + 1);
+    f.columns.reserve(rowStart[n] - rowStart[0]);
+    f.values.reserve(rowStart[n] - rowStart[0]);
+    f.start.push_back(0);
+    for (Eigen::Index i = 0; i < n; ++i)
+    {
+        const int begin = rowStart[i];
+        const int end = rowStart[i + 1];
+        scalar largest = 0;
+        bool hasDiagonal = false;
+        for (int k = begin; k < end; ++k)
+        {
+            if (columns[k] == i) hasDiagonal = true;
+            else largest = std::max(largest, std::abs(values[k]));
+        }
+        const scalar limit = hasDiagonal ? tolerance*largest : 0;
+
+        label diagonal = -1;
+        scalar lumped = 0;
+        for (int k = begin; k < end; ++k)
+        {
+            if (columns[k] != i && std::abs(values[k]) < limit)
+            {
+                lumped += values[k];
+                continue;
+            }
+            if (columns[k] == i) diagonal = label(f.values.size());
+            f.columns.push_back(columns[k]);
+            f.values.push_back(values[k]);
+        }
+        if (diagonal >= 0) f.values[diagonal] += lumped;
+        f.start.push_back(int(f.columns.size()));
+    }
+    return f;
+}
+
+
 Foam::SPH::BoomerAMG::hierarchy::hierarchy()
 {
     // MPI's start (a singleton Open MPI run spawns its daemon, about 0.3 s)
@@ -215,6 +264,17 @@ void Foam::SPH::BoomerAMG::hierarchy::build
     hypre_.reset();
     hypre_.reset(new hypreObjects(c, n));
     hypreObjects& h = *hypre_;
+
+    nEntries_ += rowStart[n] - rowStart[0];
+    compressedRows kept;
+    if (c.filterTolerance > 0)
+    {
+        kept = filtered(n, rowStart, columns, values, c.filterTolerance);
+        rowStart = kept.start.data();
+        columns = kept.columns.data();
+        values = kept.values.data();
+    }
+    nEntriesKept_ += rowStart[n] - rowStart[0];
 
     // The matrix, row by row from Eigen's compressed rows
     std::vector<HYPRE_Int> rowSizes(n);
@@ -333,7 +393,8 @@ Foam::SPH::BoomerAMG::controls::controls(const dictionary& dict)
         dict.getOrDefault<label>("maxInterpolationEntries", 4)
     ),
     aggressiveLevels(dict.getOrDefault<label>("aggressiveLevels", 0)),
-    reuse(dict.getOrDefault<label>("reuse", 10))
+    reuse(dict.getOrDefault<label>("reuse", 10)),
+    filterTolerance(dict.getOrDefault<scalar>("filterTolerance", 0.25))
 {
     if (!(strongThreshold > 0 && strongThreshold < 1))
     {
@@ -360,6 +421,13 @@ Foam::SPH::BoomerAMG::controls::controls(const dictionary& dict)
             << "Entry aggressiveLevels " << aggressiveLevels
             << ": expected >= 0" << exit(FatalIOError);
     }
+    if (!(filterTolerance >= 0 && filterTolerance < 1))
+    {
+        FatalIOErrorInFunction(dict.lookup("filterTolerance"))
+            << "Entry filterTolerance " << filterTolerance
+            << ": expected 0 <= filterTolerance < 1 (0: no filter)"
+            << exit(FatalIOError);
+    }
     if (reuse < 1)
     {
         FatalIOErrorInFunction(dict.lookup("reuse"))
@@ -380,7 +448,7 @@ void Foam::SPH::BoomerAMG::controls::write(Ostream& os) const
         << " x" << nSweeps << ", strongThreshold " << strongThreshold
         << ", maxInterpolationEntries " << maxInterpolationEntries
         << ", aggressiveLevels " << aggressiveLevels << ", reuse " << reuse
-        << ")";
+        << ", filterTolerance " << filterTolerance << ")";
 }
 
 

@@ -123,4 +123,10 @@ Foam::label Foam::SPH::linearSolver::nPreconditionerBuilds() const
 }
 
 
+Foam::scalar Foam::SPH::linearSolver::preconditionerEntriesKept() const
+{
+    return amgHierarchy_ ? amgHierarchy_->keptFraction() : 1;
+}
+
+
 // ************************************************************************* //

@@ -542,9 +542,11 @@ void Foam::SPH::isph::printTimes() const
         << ", particle-steps per second " << nFluid_*nSteps_/total << nl;
     if (pressure_->solver().nPreconditionerBuilds() > 0)
     {
-        Info<< "Multigrid hierarchies built: "
-            << pressure_->solver().nPreconditionerBuilds() << " for "
-            << nSteps_ << " solves" << nl;
+        const linearSolver& s = pressure_->solver();
+        Info<< "Multigrid hierarchies built: " << s.nPreconditionerBuilds()
+            << " for " << nSteps_ << " solves, on "
+            << round(1000*s.preconditionerEntriesKept())/10
+            << " % of the matrix entries (filterTolerance)" << nl;
     }
     if (wallDistance_ && wallDistance_->nHeldTotal() > 0)
     {
