@@ -394,7 +394,7 @@ Foam::SPH::BoomerAMG::controls::controls(const dictionary& dict)
     ),
     aggressiveLevels(dict.getOrDefault<label>("aggressiveLevels", 0)),
     reuse(dict.getOrDefault<label>("reuse", 10)),
-    filterTolerance(dict.getOrDefault<scalar>("filterTolerance", 0.25))
+    filterTolerance(dict.getOrDefault<scalar>("filterTolerance", 0))
 {
     if (!(strongThreshold > 0 && strongThreshold < 1))
     {
