@@ -215,7 +215,6 @@ void Foam::SPH::neighbourList::fillSelected
         for (label i = 0; i < n; ++i)
         {
             kept.clear();
-            bool sorted = true;
             for (label k = wOff[i]; k < wOff[i + 1]; ++k)
             {
                 const label j = wIdx[k];
@@ -229,20 +228,17 @@ void Foam::SPH::neighbourList::fillSelected
                         buildOrderCoord(cy[j], cy[i], ny, periodic[1]);
                     const int64_t key =
                         (int64_t(y + ny)*(3*nx) + (x + nx))*n + j;
-                    sorted = sorted && (kept.empty() || kept.back().key < key);
                     kept.push_back({key, j, d, r2});
                 }
             }
             // The wide list is in its build's order, which the points'
-            // small moves since have hardly changed (keys are unique)
-            if (!sorted)
-            {
-                sortNearlyAscending
-                (
-                    kept,
-                    [](const pair& p, const pair& q) { return p.key < q.key; }
-                );
-            }
+            // small moves since have hardly changed (keys are unique; an
+            // ordered list costs one comparison an entry)
+            sortNearlyAscending
+            (
+                kept,
+                [](const pair& p, const pair& q) { return p.key < q.key; }
+            );
             label m = off[i];
             for (const pair& p : kept)
             {

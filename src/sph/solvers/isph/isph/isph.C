@@ -544,9 +544,13 @@ void Foam::SPH::isph::printTimes() const
     {
         const linearSolver& s = pressure_->solver();
         Info<< "Multigrid hierarchies built: " << s.nPreconditionerBuilds()
-            << " for " << nSteps_ << " solves, on "
-            << round(1000*s.preconditionerEntriesKept())/10
-            << " % of the matrix entries (filterTolerance)" << nl;
+            << " for " << nSteps_ << " solves";
+        if (s.preconditionerEntriesKept() < 1)
+        {
+            Info<< ", on " << round(1000*s.preconditionerEntriesKept())/10
+                << " % of the matrix entries (filterTolerance)";
+        }
+        Info<< nl;
     }
     if (wallDistance_ && wallDistance_->nHeldTotal() > 0)
     {
