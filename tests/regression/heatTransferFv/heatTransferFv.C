@@ -79,17 +79,21 @@ TEST(heatedLidCavityTutorial, fvHotWallNusseltNearTheFineMeshValue)
     EXPECT_GT(nuLid, 0);
     EXPECT_TRUE(isFile(dir/"results"/"Nu.png"));
 
-    // The SPH side, isphFoam at 16^2 (15 particles a side) to t = 200:
-    // the hot bottom's mean Nu measured 7.200 against FV 32^2's 7.197,
-    // checked within 8 % of the fine-mesh 7.508 (without the buoyancy or
-    // with the walls' temperatures swapped it is far off); u/U min on
-    // x = 1/2 measured -0.167 (the lid drives the vortex: checked below
-    // -0.1); profiles within 0.35 U and 0.35 of FV 32^2 (measured 0.225,
-    // 0.279: 15 particles across a Re = 1000 cavity)
+    // The SPH side, isphFoam at 16^2 (15 particles a side) to t = 200,
+    // compare's figures averaged over the written times of the last half
+    // (one snapshot's profiles scatter as the particles move past the
+    // lines): the hot bottom's mean Nu measured 7.05-7.27 against FV
+    // 32^2's 7.197, checked within 8 % of the fine-mesh 7.508 (without
+    // the buoyancy or with the walls' temperatures swapped it is far
+    // off); u/U min on x = 1/2 measured -0.18 (the lid drives the
+    // vortex: checked below -0.1); profiles within 0.4 U and 0.4 of FV
+    // 32^2 (measured 0.29-0.31 and 0.26-0.28 in two realisations that
+    // differ in the last digits of the pressure solve: 15 particles
+    // across a Re = 1000 cavity)
     const auto sph = sphTest::tableRow(dir/"results"/"lid.dat", {"sph", "15"});
     ASSERT_GE(sph.size(), 15u) << out;
     EXPECT_NEAR(std::stod(sph[5]), 7.508, 0.08*7.508);
     EXPECT_LT(std::stod(sph[9]), -0.1);
-    EXPECT_LT(std::stod(sph[12]), 0.35);
-    EXPECT_LT(std::stod(sph[13]), 0.35);
+    EXPECT_LT(std::stod(sph[12]), 0.4);
+    EXPECT_LT(std::stod(sph[13]), 0.4);
 }
