@@ -225,21 +225,21 @@ namespace
 }
 
 
-TEST_F(cellLinkedListTest, cellsAreNoSmallerThanRadius)
+TEST_F(cellLinkedListTest, cellsAreNoSmallerThanHalfTheRadius)
 {
-    // 1/0.3 = 3.33: 3 cells of 1/3; 0.5/0.3 = 1.67: 1 cell of 0.5
+    // 1/0.15 = 6.67: 6 cells of 1/6; 0.5/0.15 = 3.33: 3 cells of 1/6
     SPH::cellLinkedList cells(vector2D(0, 0), vector2D(1, 0.5), 0.3);
-    EXPECT_EQ(cells.nCellsXY()[0], 3);
-    EXPECT_EQ(cells.nCellsXY()[1], 1);
-    EXPECT_GE(cells.cellSize().x(), 0.3);
-    EXPECT_GE(cells.cellSize().y(), 0.3);
+    EXPECT_EQ(cells.nCellsXY()[0], 6);
+    EXPECT_EQ(cells.nCellsXY()[1], 3);
+    EXPECT_GE(cells.cellSize().x(), 0.15);
+    EXPECT_GE(cells.cellSize().y(), 0.15);
 
-    // Rounding in L/radius must never leave a cell below the radius
-    for (const scalar r : {0.1, 0.2, 0.3, 0.7, 1e-3, 1.0/3})
+    // Rounding in L/radius must never leave a cell below half the radius
+    for (const scalar r : {0.1, 0.2, 0.3, 0.7, 1e-3, 1.0/3, 2.0/3})
     {
         SPH::cellLinkedList c(vector2D(-1, 0.1), vector2D(1.1, 0.8), r);
-        EXPECT_GE(c.cellSize().x(), r);
-        EXPECT_GE(c.cellSize().y(), r);
+        EXPECT_GE(c.cellSize().x(), 0.5*r);
+        EXPECT_GE(c.cellSize().y(), 0.5*r);
     }
 }
 

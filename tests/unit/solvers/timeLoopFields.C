@@ -164,6 +164,8 @@ fileName makeCase(const std::string& name, const std::string& start)
         dir/"system"/"sphSchemes",
         "FoamFile { version 2.0; format ascii; class dictionary;"
         " object sphSchemes; }\n"
+        // The checks find a particle's T by its index: no sort by cell
+        "particleSortInterval 0;\n"
     );
     return dir;
 }

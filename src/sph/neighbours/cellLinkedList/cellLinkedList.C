@@ -19,6 +19,11 @@ namespace
     const Foam::scalar maxCells = 134217728;
 
     const char* const axisName[2] = {"x", "y"};
+
+    // Cells of half the radius: a query's window of cells is then 2.5
+    // radii wide instead of 3, so 31 % fewer points are tested against the
+    // radius (benchmarks/neighbourSearch)
+    const Foam::scalar cellsPerRadius = 2;
 }
 
 
@@ -44,18 +49,19 @@ void Foam::SPH::cellLinkedList::setCells()
                 << " in " << axisName[d] << exit(FatalError);
         }
 
-        // As many cells as fit with size >= radius; the decrement undoes a
-        // floor that rounding pushed one too high
-        const scalar nFit = std::floor(L/radius_);
+        // As many cells as fit with size >= radius/cellsPerRadius; the
+        // decrement undoes a floor that rounding pushed one too high
+        const scalar minSize = radius_/cellsPerRadius;
+        const scalar nFit = std::floor(L/minSize);
         label n = (nFit < 1 ? 1 : label(Foam::min(nFit, maxCells)));
-        while (n > 1 && L/n < radius_)
+        while (n > 1 && L/n < minSize)
         {
             --n;
         }
 
         // A period below two radii would put a second image of a point
         // within the radius, which the minimum image cannot report
-        if (periodic_[d] && n < 2)
+        if (periodic_[d] && L < 2*radius_)
         {
             FatalErrorInFunction
                 << "Periodic in " << axisName[d] << " with period " << L
