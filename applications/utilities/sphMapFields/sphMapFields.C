@@ -205,7 +205,24 @@ int main(int argc, char *argv[])
     dictionary sourceDict;
     sourceDict.add("type", word("sph"));
     sourceDict.add("case", source);
-    sourceDict.add("time", args.getOrDefault<word>("sourceTime", "latestTime"));
+    // The source's 'time' entry: latestTime (a word) or a number, which a
+    // word holding digits is not
+    const word sourceTime(args.getOrDefault<word>("sourceTime", "latestTime"));
+    scalar sourceValue = 0;
+    if (sourceTime == "latestTime")
+    {
+        sourceDict.add("time", sourceTime);
+    }
+    else if (readScalar(sourceTime, sourceValue))
+    {
+        sourceDict.add("time", sourceValue);
+    }
+    else
+    {
+        FatalErrorInFunction
+            << "Option -sourceTime " << sourceTime << ": expected a time"
+            << " value or latestTime" << exit(FatalError);
+    }
     SPH::sampleSource::options opts;
     opts.baseDir = runTime.path();
     autoPtr<SPH::sampleSource> src =

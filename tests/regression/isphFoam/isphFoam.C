@@ -370,6 +370,18 @@ TEST(isphFoam, startsFromAVelocityMappedFromACoarserRun)
     ASSERT_EQ(run(bin + "sphMapFields -case " + fine + " " + coarse, out), 0) << out;
     EXPECT_NE(out.find("Mapped U of 361 fluid particles"), std::string::npos) << out;
 
+    // -sourceTime: a written time by its value (cavity Allrun -fromTime);
+    // one not written, or not a number, is an error that lists or names it
+    const std::string map = bin + "sphMapFields -case " + fine + " " + coarse;
+    ASSERT_EQ(run(map + " -sourceTime 1", out), 0) << out;
+    EXPECT_NE(out.find("Mapped U of 361 fluid particles"), std::string::npos) << out;
+    EXPECT_NE(run(map + " -sourceTime 0.5", out), 0);
+    EXPECT_NE(out.find("no time 0.5"), std::string::npos) << out;
+    EXPECT_NE(out.find("Times:"), std::string::npos) << out;
+    EXPECT_NE(run(map + " -sourceTime soon", out), 0);
+    EXPECT_NE(out.find("Option -sourceTime soon: expected a time value"), std::string::npos)
+        << out;
+
     ASSERT_EQ(solve(fine, out), 0) << tail(out);
     EXPECT_NE(out.find("Initial velocity per particle from"), std::string::npos) << out;
 
