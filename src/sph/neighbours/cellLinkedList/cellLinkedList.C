@@ -22,7 +22,7 @@ namespace
 
     // Cells of half the radius: a query's window of cells is then 2.5
     // radii wide instead of 3, so 31 % fewer points are tested against the
-    // radius (benchmarks/neighbourSearch)
+    // radius (side by side: benchmarks/README.md)
     const Foam::scalar cellsPerRadius = 2;
 }
 
