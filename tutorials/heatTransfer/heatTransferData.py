@@ -194,11 +194,12 @@ def sph_time_average(case, result_of, last=0.5):
     written times of an SPH case in the last fraction of its run, or None.
     A particle flow at steady state still moves its particles past the
     sampling lines, so one snapshot's profiles and maxima scatter by a few
-    per cent at 16^2; their average over the last half does not. Numbers
-    and arrays are averaged (nan-aware); other entries are the latest's.
-    'time' is the latest time, 'averaged' says over what."""
+    per cent at 16^2; their average over the last half does not. Floats
+    and arrays are averaged (nan-aware); other entries (n, cells: ints)
+    are the latest's; 'time' is the latest time, 'averaged' says over
+    what."""
     found = sph_series(case)
-    if not found or not found[1]:
+    if not found:
         return None
     files = [e for e in found[1] if e[0] > 0]
     if not files:
@@ -214,14 +215,12 @@ def sph_time_average(case, result_of, last=0.5):
         runs.append(run)
     out = dict(runs[-1])
     for key, value in runs[-1].items():
-        if isinstance(value, bool) or key in ("n", "cells", "time"):
-            continue
         if isinstance(value, (float, np.floating, np.ndarray)):
             stack = np.array([r[key] for r in runs], dtype=float)
             with warnings.catch_warnings():     # all-nan columns stay nan
                 warnings.simplefilter("ignore", RuntimeWarning)
                 out[key] = np.nanmean(stack, axis=0)
-    out["averaged"] = (len(runs), files[0][0], tLast)
+    out.update(time=tLast, averaged=(len(runs), files[0][0], tLast))
     return out
 
 

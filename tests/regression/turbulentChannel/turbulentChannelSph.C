@@ -27,9 +27,8 @@ Description
 
 #include <gtest/gtest.h>
 #include "testCase.H"
+#include "particles.H"
 
-#include <cstdint>
-#include <cstring>
 #include <fstream>
 #include <iterator>
 
@@ -58,24 +57,15 @@ namespace
     }
 
 
-    // The first value of a binary lagrangian label field (32-bit labels):
-    // the id of the particle that setFirstValue changes, which the sort
-    // of the particles by cell puts first
-    int firstLabel(const fileName& file)
+    // The id of the first particle of a run's time (the one setFirstValue
+    // changes; the sort of the particles by cell chooses which)
+    label firstId(const fileName& caseDir, const word& time)
     {
-        std::ifstream in(file, std::ios::binary);
-        std::string text
-        (
-            (std::istreambuf_iterator<char>(in)),
-            std::istreambuf_iterator<char>()
-        );
-        const std::size_t open = text.find('(', text.find("// * * *"));
-        int32_t value = -1;
-        if (open != std::string::npos && open + 1 + sizeof(value) <= text.size())
-        {
-            std::memcpy(&value, text.data() + open + 1, sizeof(value));
-        }
-        return value;
+        auto runTime = sphTest::makeTime(caseDir);
+        SPH::particles parts(*runTime, time, SPH::particles::defaultLocal, false);
+        parts.add<label>("id");
+        parts.read();
+        return parts.field<label>("id")[0];
     }
 
 
@@ -185,7 +175,7 @@ TEST(turbulentChannelTutorial, aStepThatWouldMakeKNegativeStopsTheRun)
         << log.substr(log.size() > 4000 ? log.size() - 4000 : 0);
     EXPECT_NE(log.find(": k would be -"), std::string::npos);
     EXPECT_NE(log.find("in the step to t = 2.0"), std::string::npos);
-    const int id = firstLabel(run/"2"/"lagrangian"/"sph"/"id");
+    const label id = firstId(run, "2");
     EXPECT_GE(id, 0);
     EXPECT_NE
     (
