@@ -237,6 +237,24 @@ TEST(wcsphFoamUsaw, waterInTensionStaysAtRestWithTensileInstabilityControl)
 }
 
 
+TEST(wcsphFoamUsaw, dummyWallEntriesAreRefused)
+{
+    // ks and wallTension act on the dummies only: with USAW walls an error,
+    // not ignored
+    for (const std::string entry : {"ks 1.5", "wallTension no"})
+    {
+        const std::string key = entry.substr(0, entry.find(' '));
+        const fileName dir = usawTank("wcsphUsaw_" + key, 0.05, "0.01", "0.01");
+        std::string out;
+        run("echo '" + entry + ";' >> " + dir/"system"/"sphSchemes", out);
+        EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 1) << key;
+        EXPECT_NE(out.find("Entry " + key + ": only with boundaryMethod dummyRepulsive"),
+            std::string::npos) << out;
+        EXPECT_NE(out.find("system/sphSchemes"), std::string::npos) << out;
+    }
+}
+
+
 TEST(wcsphFoamUsaw, dummyLayoutIsRefusedAtRestart)
 {
     // A tank run with dummies, restarted with boundaryMethod usaw: its wall

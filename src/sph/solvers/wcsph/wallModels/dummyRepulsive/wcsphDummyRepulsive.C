@@ -34,7 +34,8 @@ Foam::SPH::wcsphDummyRepulsive::wcsphDummyRepulsive
     wcsphWallModel(runTime, schemes, walls, W, work),
     ks_(schemes.getOrDefault<scalar>("ks", 1.5)),
     // 004_... eq. (11): K = 0.01 b0 gamma/rho0 (= 0.01 c0^2)
-    K_(0.01*work.b0*work.gamma/work.rho0)
+    K_(0.01*work.b0*work.gamma/work.rho0),
+    wallTension_(schemes.getOrDefault<bool>("wallTension", true))
 {
     if (!(ks_ > 0) || ks_*W.h() > W.support() + SMALL)
     {
@@ -74,7 +75,10 @@ void Foam::SPH::wcsphDummyRepulsive::rates(const scalar t)
     dispatch(kernel_, [&](const auto& W)
     {
         // Eq. (10): the dummies' pressure and density
-        shepardWallPressure(W, work_, 0);
+        shepardWallPressure
+        (
+            W, work_, 0, nullptr, nullptr, wallTension_ ? -GREAT : 0
+        );
         work_.setSoundSpeeds();
         fluidRates(W);
     });
@@ -88,8 +92,9 @@ void Foam::SPH::wcsphDummyRepulsive::describe
 ) const
 {
     const wcsphWork& w = work_;
-    os  << indent << "wall particles     dummy pressure eq. (10), density from"
-        << " eq. (4)" << nl
+    os  << indent << "wall particles     dummy pressure eq. (10)"
+        << (wallTension_ ? "" : ", fluid tension read as 0 (wallTension no)")
+        << ", density from eq. (4)" << nl
         << indent << "equation of state  Tait eq. (4): c0 " << w.c0 << ", gamma "
         << w.gamma << ", b0 " << w.b0 << nl
         << indent << "continuity         eq. (6)"
