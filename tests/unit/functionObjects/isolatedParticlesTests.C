@@ -8,7 +8,8 @@ Description
       particle has 12 others within 2 dr, a face 8, a corner 5);
     - a lone particle far away is isolated and sparse; a pair 1.2 dr apart
       is sparse, not isolated; a particle 1.6 dr from the block's face is
-      isolated (none within 1.5 dr) and sparse (3 within 2 dr);
+      isolated (none within 1.5 dr) and sparse (3 within 2 dr); a lone
+      particle dr/2 from the right wall is sparse by a wall, the others not;
     - the file has the fractions and the counts;
     - a radius beyond the search's reach is refused, naming the entry.
 
@@ -51,18 +52,21 @@ TEST(isolatedParticles, countsLoneParticlesPairsAndNearOnes)
     ({
         vector2D(1.6, 0.8),                             // lone
         vector2D(1.4, 0.8), vector2D(1.4 + 1.2*dr, 0.8),  // a pair
-        vector2D(1 - 0.5*dr + 1.6*dr, 0.25 + 0.5*dr)   // beside the face
+        vector2D(1 - 0.5*dr + 1.6*dr, 0.25 + 0.5*dr),  // beside the face
+        vector2D(2 - 0.5*dr, 0.8)                       // on the right wall
     });
     sphTest::sphTank tank("spraySome", spec);
     auto fo = tank.fo("spray", "type isolatedParticles;");
     fo->execute();
-    EXPECT_EQ(asSpray(fo).nIsolated(), 2);      // the lone one, the near one
-    EXPECT_EQ(asSpray(fo).nSparse(), 4);        // all four
+    // The lone ones (in the air, on the wall) and the near one
+    EXPECT_EQ(asSpray(fo).nIsolated(), 3);
+    EXPECT_EQ(asSpray(fo).nSparse(), 5);        // all five
+    EXPECT_EQ(asSpray(fo).nSparseByWall(), 1);  // the one on the wall
 
-    // One neighbour is enough: only the lone one is sparse
+    // One neighbour is enough: only the lone ones are sparse
     auto two = tank.fo("two", "type isolatedParticles; minNeighbours 1;");
     two->execute();
-    EXPECT_EQ(asSpray(two).nSparse(), 1);
+    EXPECT_EQ(asSpray(two).nSparse(), 2);
 }
 
 
@@ -84,11 +88,12 @@ TEST(isolatedParticles, fileHasFractionsAndCounts)
     ASSERT_EQ(data.size(), 1u);
     std::istringstream row(data[0]);
     double t, isolated, sparse;
-    label nIsolated, nSparse, nFluid;
-    row >> t >> isolated >> sparse >> nIsolated >> nSparse >> nFluid;
+    label nIsolated, nSparse, nFluid, nSparseByWall = -1;
+    row >> t >> isolated >> sparse >> nIsolated >> nSparse >> nFluid >> nSparseByWall;
     EXPECT_EQ(nFluid, tank.nFluid);
     EXPECT_EQ(nIsolated, 1);
     EXPECT_EQ(nSparse, 1);
+    EXPECT_EQ(nSparseByWall, 0);
     EXPECT_NEAR(isolated, 1.0/tank.nFluid, 1e-8);
 }
 

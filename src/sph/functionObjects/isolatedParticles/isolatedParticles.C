@@ -40,6 +40,7 @@ void Foam::SPH::functionObjects::isolatedParticles::writeFileHeader
     writeTabbed(os, "nIsolated");
     writeTabbed(os, "nSparse");
     writeTabbed(os, "nFluid");
+    writeTabbed(os, "nSparseByWall");
     os  << endl;
 }
 
@@ -59,28 +60,41 @@ void Foam::SPH::functionObjects::isolatedParticles::measure()
 
     label nIsolated = 0;
     label nSparse = 0;
-    #pragma omp parallel for schedule(static) reduction(+:nIsolated, nSparse) \
+    label nSparseByWall = 0;
+    #pragma omp parallel for schedule(static) \
+        reduction(+:nIsolated, nSparse, nSparseByWall) \
         if(SPH::worthThreads(nFluid))
     for (label a = 0; a < nFluid; ++a)
     {
         label nNear = 0;
         bool isolated = true;
+        bool byWall = false;
         c.cells().forEachNeighbour
         (
             pos[a],
             reach,
             [&](const label b, const vector2D&, const scalar r2)
             {
-                if (b >= nFluid || b == a) return;
+                if (b >= nFluid)
+                {
+                    byWall = byWall || r2 <= rSparse2;
+                    return;
+                }
+                if (b == a) return;
                 if (r2 < rIsolated2) isolated = false;
                 if (r2 <= rSparse2) ++nNear;
             }
         );
         if (isolated) ++nIsolated;
-        if (nNear < minNeighbours_) ++nSparse;
+        if (nNear < minNeighbours_)
+        {
+            ++nSparse;
+            if (byWall) ++nSparseByWall;
+        }
     }
     nIsolated_ = nIsolated;
     nSparse_ = nSparse;
+    nSparseByWall_ = nSparseByWall;
     nFluid_ = nFluid;
 }
 
@@ -89,8 +103,9 @@ void Foam::SPH::functionObjects::isolatedParticles::writeLog() const
 {
     Info<< "    isolatedParticles " << name() << ": isolated "
         << 100*fraction(nIsolated_) << " % (" << nIsolated_ << "), sparse "
-        << 100*fraction(nSparse_) << " % (" << nSparse_ << ") of "
-        << nFluid_ << " fluid particles" << endl;
+        << 100*fraction(nSparse_) << " % (" << nSparse_ << "; "
+        << nSparseByWall_ << " by a wall) of " << nFluid_
+        << " fluid particles" << endl;
 }
 
 
@@ -105,7 +120,8 @@ void Foam::SPH::functionObjects::isolatedParticles::writeFiles()
     OFstream& os = file();
     writeCurrentTime(os);
     os  << tab << fraction(nIsolated_) << tab << fraction(nSparse_)
-        << tab << nIsolated_ << tab << nSparse_ << tab << nFluid_ << endl;
+        << tab << nIsolated_ << tab << nSparse_ << tab << nFluid_
+        << tab << nSparseByWall_ << endl;
 }
 
 
@@ -124,6 +140,7 @@ Foam::SPH::functionObjects::isolatedParticles::isolatedParticles
     minNeighbours_(5),
     nIsolated_(0),
     nSparse_(0),
+    nSparseByWall_(0),
     nFluid_(0)
 {
     read(dict);
