@@ -38,8 +38,6 @@ namespace
     )
     {
         const fileName dir = sphTest::copyTutorial("heatTransfer/" + name, name);
-        sphTest::run("cp " + std::string(SPHFOAM_SOURCE_DIR)
-          + "/tutorials/heatTransfer/heatTransferData.py " + dir.path());
         EXPECT_EQ
         (
             sphTest::runWithBashrc(dir + "/Allclean && " + dir + "/Allrun -test" + options, out),

@@ -53,8 +53,7 @@ namespace
 
 TEST(lockExchangeTutorial, sphFrontFroudeNumberSymmetricAndNearHaertel)
 {
-    // The tutorial without its runs and results; compare imports
-    // ../heatTransferData.py
+    // The tutorial without its runs and results
     const fileName dir =
         fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"heatTransfer"/"lockExchange";
     const std::string src =
@@ -67,7 +66,7 @@ TEST(lockExchangeTutorial, sphFrontFroudeNumberSymmetricAndNearHaertel)
         sphTest::run
         (
             "tar -C " + src + " --exclude=runs --exclude=results --exclude='log.*'"
-            " -cf - lockExchange heatTransferData.py | tar -C " + dir.path()
+            " -cf - lockExchange | tar -C " + dir.path()
           + " -xf -",
             out
         ),

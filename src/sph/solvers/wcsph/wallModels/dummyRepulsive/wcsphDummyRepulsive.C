@@ -45,20 +45,12 @@ Foam::SPH::wcsphDummyRepulsive::wcsphDummyRepulsive
             << " (the repulsion must lie within the kernel support)"
             << exit(FatalIOError);
     }
-    // Entries of the USAW walls' momentum equation: not silently ignored
-    for
+    // Entries of the USAW walls' momentum equation
+    refuseEntries
     (
-        const word key
-      : {"backgroundPressure", "pressureGradient", "tensileInstabilityControl"}
-    )
-    {
-        if (schemes.found(key))
-        {
-            FatalIOErrorInFunction(schemes.lookup(key))
-                << "Entry " << key << ": only with boundaryMethod usaw"
-                << exit(FatalIOError);
-        }
-    }
+        {"backgroundPressure", "pressureGradient", "tensileInstabilityControl"},
+        "usaw"
+    );
     wallConditions(runTime, walls, "U").allowOnly
     (
         {wallConditions::conditionType::noSlip},

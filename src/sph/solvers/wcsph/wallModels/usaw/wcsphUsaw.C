@@ -113,16 +113,7 @@ Foam::SPH::wcsphUsaw::wcsphUsaw
             << projection::gradientFormNames[gradientForm_]
             << exit(FatalIOError);
     }
-    // Entries of the dummy walls: not silently ignored
-    for (const word key : {"ks", "wallTension"})
-    {
-        if (schemes.found(key))
-        {
-            FatalIOErrorInFunction(schemes.lookup(key))
-                << "Entry " << key << ": only with boundaryMethod"
-                << " dummyRepulsive" << exit(FatalIOError);
-        }
-    }
+    refuseEntries({"ks", "wallTension"}, "dummyRepulsive");
 }
 
 

@@ -35,6 +35,26 @@ Foam::SPH::wcsphWallModel::wcsphWallModel
 {}
 
 
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::SPH::wcsphWallModel::refuseEntries
+(
+    std::initializer_list<word> keys,
+    const word& onlyWith
+) const
+{
+    for (const word& key : keys)
+    {
+        if (schemes_.found(key))
+        {
+            FatalIOErrorInFunction(schemes_.lookup(key))
+                << "Entry " << key << ": only with boundaryMethod " << onlyWith
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::SPH::wcsphWallModel::initialWalls() const
