@@ -335,20 +335,29 @@ void Foam::SPH::pressurePoisson::describe(Ostream& os) const
 }
 
 
+template<class Kernel>
+void Foam::SPH::pressurePoisson::assemble(const Kernel& K)
+{
+    laplacian_.assemble(K, source_);
+    const label nNew = work_.ghostSurface ? anchorFloatingClusters() : 0;
+    if (nNew)
+    {
+        nFloating_ += nNew;
+        laplacian_.assemble(K, source_);
+    }
+}
+
+
 void Foam::SPH::pressurePoisson::execute(const scalar dt)
 {
     isphWork& w = work_;
     wallCondition(dt);
+    nFloating_ = 0;
     dispatch(w.W, [&](const auto& K)
     {
         setSources(K, dt);
         classifyRows(K);
-        laplacian_.assemble(K, source_);
-        nFloating_ = w.ghostSurface ? anchorFloatingClusters() : 0;
-        if (nFloating_)
-        {
-            laplacian_.assemble(K, source_);
-        }
+        assemble(K);
     });
     if (!freeSurface_)
     {
@@ -359,7 +368,9 @@ void Foam::SPH::pressurePoisson::execute(const scalar dt)
 
     // The liquid separates rather than pull below pMin: the rows solved
     // below it are held there and the system solved again (a few passes:
-    // each can pull others below)
+    // each can pull others below). Held rows can leave others floating (a
+    // vertex extension row averages its non-Dirichlet neighbours only), so
+    // each assembly anchors again
     nAtPMin_ = 0;
     nReleased_ = 0;
     for (label pass = 0; pass < 4 && pMin_ > -VGREAT; ++pass)
@@ -367,7 +378,7 @@ void Foam::SPH::pressurePoisson::execute(const scalar dt)
         const label nNew = holdAtPMin();
         if (!nNew) break;
         nAtPMin_ += nNew;
-        dispatch(w.W, [&](const auto& K) { laplacian_.assemble(K, source_); });
+        dispatch(w.W, [&](const auto& K) { assemble(K); });
         solve();
     }
 }

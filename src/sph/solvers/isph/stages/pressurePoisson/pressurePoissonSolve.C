@@ -9,6 +9,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "pressurePoisson.H"
+#include "floatingRows.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -46,61 +47,46 @@ void Foam::SPH::pressurePoisson::wallCondition(const scalar dt)
 
 Foam::label Foam::SPH::pressurePoisson::anchorFloatingClusters()
 {
-    // A set of rows coupled only among themselves with no row that fixes
-    // the level (a Dirichlet value moved to the right-hand side, or a
-    // ghost row's diagonal, make a row strictly dominant) is singular: a
-    // droplet sliding down a wall, all its particles kept off the surface
-    // by the wall-crossing test (39), with the wall's vertex particles
-    // (the 4 mm obstacle dam-break's pressure solve failed so). Its fluid
-    // particles get p = 0
+    // Rows that reach no anchor (SPH::reachesAnAnchor) leave the system
+    // singular: a droplet sliding down a wall, all its particles kept off
+    // the surface by the wall-crossing test (39) (the 4 mm obstacle
+    // dam-break); a pair joined to the liquid by a kernel's tail only (the
+    // water wheel at dr 0.02 m, t = 15.35 s, where GMRES stalled). Their
+    // fluid particles get p = 0, the air's; so do the vertex particles
+    // that still float then (a wall whose fluid neighbours are all at 0)
     const sparseMatrix& M = laplacian_.matrix();
     const label n = M.rows();
     labelList& kind = laplacian_.kinds();
-    labelList cluster(n, -1);
-    DynamicList<label> members, stack;
-    label nFixed = 0;
-    for (label start = 0; start < n; ++start)
+    boolList dirichlet(n);
+    forAll(dirichlet, i)
     {
-        if (cluster[start] >= 0 || kind[start] == laplacianMatrix::dirichlet)
+        dirichlet[i] = kind[i] == laplacianMatrix::dirichlet;
+    }
+    boolList fixed(n, false);
+    boolList reaches(reachesAnAnchor(M, dirichlet, fixed));
+
+    label nFixed = 0;
+    for (label i = 0; i < work_.nFluid; ++i)
+    {
+        if (!dirichlet[i] && !reaches[i])
         {
-            continue;
+            kind[i] = laplacianMatrix::dirichlet;
+            work_.surfaceNormal[i] = Zero;
+            fixed[i] = true;
+            ++nFixed;
         }
-        members.clear();
-        stack.clear();
-        stack.append(start);
-        cluster[start] = start;
-        bool anchored = false;
-        while (stack.size())
+    }
+    if (nFixed)
+    {
+        // Assembled again, the rows that refer to them are dominant
+        reaches = reachesAnAnchor(M, dirichlet, fixed);
+    }
+    for (label i = work_.nFluid; i < n; ++i)
+    {
+        if (!dirichlet[i] && !reaches[i])
         {
-            const label i = stack.remove();
-            members.append(i);
-            scalar diag = 0, off = 0;
-            for (sparseMatrix::InnerIterator it(M, i); it; ++it)
-            {
-                const label j = it.col();
-                if (j == i)
-                {
-                    diag = it.value();
-                    continue;
-                }
-                off += mag(it.value());
-                if (cluster[j] < 0)
-                {
-                    cluster[j] = start;
-                    stack.append(j);
-                }
-            }
-            anchored = anchored || diag > off*(1 + 1e-9);
-        }
-        if (anchored) continue;
-        for (const label i : members)
-        {
-            if (i < work_.nFluid)
-            {
-                kind[i] = laplacianMatrix::dirichlet;
-                work_.surfaceNormal[i] = Zero;
-                ++nFixed;
-            }
+            kind[i] = laplacianMatrix::dirichlet;
+            ++nFixed;
         }
     }
     return nFixed;

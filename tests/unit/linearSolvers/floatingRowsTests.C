@@ -1,0 +1,171 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    SPH::reachesAnAnchor (src/sph/linearSolvers/floatingRows): which rows of
+    a weakly diagonally dominant matrix reach a strictly dominant row. A
+    chain to an anchor, a set coupled only among itself, a set joined to
+    the anchored rows by a kernel's tail (1e-42) only, links that run one
+    way, Dirichlet rows skipped, and rows marked as anchors; each verdict
+    against Eigen's SparseLU (singular or not).
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "floatingRows.H"
+
+#include <Eigen/SparseLU>
+
+using namespace Foam;
+
+namespace
+{
+    typedef std::vector<Eigen::Triplet<scalar>> triplets;
+
+    //- Rows i: diag d_i, off-diagonals -w to each listed neighbour, with
+    //- d_i the sum of the |off| plus extra[i] (> 0: strictly dominant)
+    SPH::sparseMatrix matrix
+    (
+        const label n,
+        const std::vector<std::tuple<int, int, scalar>>& links,
+        const std::vector<scalar>& extra
+    )
+    {
+        triplets t;
+        std::vector<scalar> diag(extra);
+        for (const auto& [i, j, w] : links)
+        {
+            t.emplace_back(i, j, -w);
+            diag[i] += w;
+        }
+        for (label i = 0; i < n; ++i)
+        {
+            t.emplace_back(i, i, diag[i]);
+        }
+        SPH::sparseMatrix M(n, n);
+        M.setFromTriplets(t.begin(), t.end());
+        M.makeCompressed();
+        return M;
+    }
+
+    bool singular(const SPH::sparseMatrix& M)
+    {
+        Eigen::SparseMatrix<scalar> A(M);
+        Eigen::SparseLU<Eigen::SparseMatrix<scalar>> lu;
+        lu.compute(A);
+        return lu.info() != Eigen::Success || lu.absDeterminant() < 1e-30;
+    }
+
+    boolList none(const label n) { return boolList(n, false); }
+}
+
+
+TEST(floatingRows, aChainToAnAnchorDoesNotFloat)
+{
+    // 0 - 1 - 2 - 3, row 3 strictly dominant
+    const auto M = matrix
+    (
+        4,
+        {{0, 1, 1}, {1, 0, 1}, {1, 2, 1}, {2, 1, 1}, {2, 3, 1}, {3, 2, 1}},
+        {0, 0, 0, 0.5}
+    );
+    const boolList r = SPH::reachesAnAnchor(M, none(4), none(4));
+    for (label i = 0; i < 4; ++i) EXPECT_TRUE(r[i]) << i;
+    EXPECT_FALSE(singular(M));
+}
+
+
+TEST(floatingRows, aSetCoupledOnlyAmongItselfFloats)
+{
+    // {0, 1} anchored by row 1; {2, 3} only among themselves
+    const auto M = matrix
+    (
+        4,
+        {{0, 1, 1}, {1, 0, 1}, {2, 3, 1}, {3, 2, 1}},
+        {0, 0.5, 0, 0}
+    );
+    const boolList r = SPH::reachesAnAnchor(M, none(4), none(4));
+    EXPECT_TRUE(r[0]);
+    EXPECT_TRUE(r[1]);
+    EXPECT_FALSE(r[2]);
+    EXPECT_FALSE(r[3]);
+    EXPECT_TRUE(singular(M));
+}
+
+
+TEST(floatingRows, aKernelsTailIsNoLink)
+{
+    // {2, 3} joined to the anchored {0, 1} by 1e-42 only: singular in
+    // double precision, and reported so
+    const auto M = matrix
+    (
+        4,
+        {{0, 1, 1}, {1, 0, 1}, {2, 3, 1}, {3, 2, 1}, {2, 1, 1e-42}},
+        {0, 0.5, 0, 0}
+    );
+    const boolList r = SPH::reachesAnAnchor(M, none(4), none(4));
+    EXPECT_TRUE(r[0]);
+    EXPECT_FALSE(r[2]);
+    EXPECT_FALSE(r[3]);
+
+    // A real link anchors them
+    const auto N = matrix
+    (
+        4,
+        {{0, 1, 1}, {1, 0, 1}, {2, 3, 1}, {3, 2, 1}, {2, 1, 1e-3}},
+        {0, 0.5, 0, 0}
+    );
+    const boolList s = SPH::reachesAnAnchor(N, none(4), none(4));
+    EXPECT_TRUE(s[2]);
+    EXPECT_TRUE(s[3]);
+    EXPECT_FALSE(singular(N));
+}
+
+
+TEST(floatingRows, aLinkCountsOnlyFromTheRowThatRefersToTheAnchor)
+{
+    // Row 0 refers to the anchor 2 and to row 4; rows 1 and 3 refer to 0,
+    // so they reach 2 through it. Rows 4 and 5 refer only to each other:
+    // 0's reference to 4 runs the wrong way, and {4, 5} floats
+    const auto M = matrix
+    (
+        6,
+        {
+            {0, 2, 1}, {0, 4, 1}, {1, 0, 1}, {3, 0, 1},
+            {4, 5, 1}, {5, 4, 1}
+        },
+        {0, 0, 1, 0, 0, 0}
+    );
+    const boolList r = SPH::reachesAnAnchor(M, none(6), none(6));
+    EXPECT_TRUE(r[0]);
+    EXPECT_TRUE(r[1]);
+    EXPECT_TRUE(r[2]);
+    EXPECT_TRUE(r[3]);
+    EXPECT_FALSE(r[4]);
+    EXPECT_FALSE(r[5]);
+    EXPECT_TRUE(singular(M));
+}
+
+
+TEST(floatingRows, markedAnchorsAndSkippedRows)
+{
+    // {0, 1} only among themselves: marking row 1 an anchor (a particle
+    // fixed at p = 0, which assembled again makes its neighbours dominant)
+    // anchors row 0; a skipped row is neither anchor nor link
+    const auto M = matrix(3, {{0, 1, 1}, {1, 0, 1}, {2, 1, 1}}, {0, 0, 0.5});
+    boolList anchor(none(3));
+    anchor[1] = true;
+    const boolList r = SPH::reachesAnAnchor(M, none(3), anchor);
+    EXPECT_TRUE(r[0]);
+    EXPECT_TRUE(r[1]);
+
+    boolList skip(none(3));
+    skip[1] = true;
+    const boolList s = SPH::reachesAnAnchor(M, skip, anchor);
+    EXPECT_FALSE(s[0]);
+    EXPECT_FALSE(s[1]);
+    EXPECT_TRUE(s[2]);
+}
+
+
+// ************************************************************************* //
