@@ -57,6 +57,26 @@ namespace
     }
 
     boolList none(const label n) { return boolList(n, false); }
+
+    //- {0, 1} anchored by row 1, {2, 3} coupled among themselves; row 2
+    //- refers to row 1 with the given weight (0: not at all)
+    SPH::sparseMatrix twoPairs(const scalar link)
+    {
+        std::vector<std::tuple<int, int, scalar>> links
+        {{0, 1, 1}, {1, 0, 1}, {2, 3, 1}, {3, 2, 1}};
+        if (link > 0) links.emplace_back(2, 1, link);
+        return matrix(4, links, {0, 0.5, 0, 0});
+    }
+
+    //- reachesAnAnchor's verdict, row by row
+    void expectReaches(const boolList& r, const std::vector<bool>& expected)
+    {
+        ASSERT_EQ(r.size(), label(expected.size()));
+        for (size_t i = 0; i < expected.size(); ++i)
+        {
+            EXPECT_EQ(bool(r[i]), expected[i]) << "row " << i;
+        }
+    }
 }
 
 
@@ -69,8 +89,10 @@ TEST(floatingRows, aChainToAnAnchorDoesNotFloat)
         {{0, 1, 1}, {1, 0, 1}, {1, 2, 1}, {2, 1, 1}, {2, 3, 1}, {3, 2, 1}},
         {0, 0, 0, 0.5}
     );
-    const boolList r = SPH::reachesAnAnchor(M, none(4), none(4));
-    for (label i = 0; i < 4; ++i) EXPECT_TRUE(r[i]) << i;
+    expectReaches
+    (
+        SPH::reachesAnAnchor(M, none(4), none(4)), {true, true, true, true}
+    );
     EXPECT_FALSE(singular(M));
 }
 
@@ -78,47 +100,28 @@ TEST(floatingRows, aChainToAnAnchorDoesNotFloat)
 TEST(floatingRows, aSetCoupledOnlyAmongItselfFloats)
 {
     // {0, 1} anchored by row 1; {2, 3} only among themselves
-    const auto M = matrix
+    const auto M = twoPairs(0);
+    expectReaches
     (
-        4,
-        {{0, 1, 1}, {1, 0, 1}, {2, 3, 1}, {3, 2, 1}},
-        {0, 0.5, 0, 0}
+        SPH::reachesAnAnchor(M, none(4), none(4)), {true, true, false, false}
     );
-    const boolList r = SPH::reachesAnAnchor(M, none(4), none(4));
-    EXPECT_TRUE(r[0]);
-    EXPECT_TRUE(r[1]);
-    EXPECT_FALSE(r[2]);
-    EXPECT_FALSE(r[3]);
     EXPECT_TRUE(singular(M));
 }
 
 
 TEST(floatingRows, aKernelsTailIsNoLink)
 {
-    // {2, 3} joined to the anchored {0, 1} by 1e-42 only: singular in
-    // double precision, and reported so
-    const auto M = matrix
-    (
-        4,
-        {{0, 1, 1}, {1, 0, 1}, {2, 3, 1}, {3, 2, 1}, {2, 1, 1e-42}},
-        {0, 0.5, 0, 0}
-    );
-    const boolList r = SPH::reachesAnAnchor(M, none(4), none(4));
-    EXPECT_TRUE(r[0]);
-    EXPECT_FALSE(r[2]);
-    EXPECT_FALSE(r[3]);
+    // {2, 3} joined to the anchored {0, 1} by 1e-42 only floats; a real
+    // link anchors it
+    const auto tail = SPH::reachesAnAnchor(twoPairs(1e-42), none(4), none(4));
+    expectReaches(tail, {true, true, false, false});
 
-    // A real link anchors them
-    const auto N = matrix
+    const auto M = twoPairs(1e-3);
+    expectReaches
     (
-        4,
-        {{0, 1, 1}, {1, 0, 1}, {2, 3, 1}, {3, 2, 1}, {2, 1, 1e-3}},
-        {0, 0.5, 0, 0}
+        SPH::reachesAnAnchor(M, none(4), none(4)), {true, true, true, true}
     );
-    const boolList s = SPH::reachesAnAnchor(N, none(4), none(4));
-    EXPECT_TRUE(s[2]);
-    EXPECT_TRUE(s[3]);
-    EXPECT_FALSE(singular(N));
+    EXPECT_FALSE(singular(M));
 }
 
 
@@ -136,13 +139,11 @@ TEST(floatingRows, aLinkCountsOnlyFromTheRowThatRefersToTheAnchor)
         },
         {0, 0, 1, 0, 0, 0}
     );
-    const boolList r = SPH::reachesAnAnchor(M, none(6), none(6));
-    EXPECT_TRUE(r[0]);
-    EXPECT_TRUE(r[1]);
-    EXPECT_TRUE(r[2]);
-    EXPECT_TRUE(r[3]);
-    EXPECT_FALSE(r[4]);
-    EXPECT_FALSE(r[5]);
+    expectReaches
+    (
+        SPH::reachesAnAnchor(M, none(6), none(6)),
+        {true, true, true, true, false, false}
+    );
     EXPECT_TRUE(singular(M));
 }
 
@@ -155,16 +156,11 @@ TEST(floatingRows, markedAnchorsAndSkippedRows)
     const auto M = matrix(3, {{0, 1, 1}, {1, 0, 1}, {2, 1, 1}}, {0, 0, 0.5});
     boolList anchor(none(3));
     anchor[1] = true;
-    const boolList r = SPH::reachesAnAnchor(M, none(3), anchor);
-    EXPECT_TRUE(r[0]);
-    EXPECT_TRUE(r[1]);
+    expectReaches(SPH::reachesAnAnchor(M, none(3), anchor), {true, true, true});
 
     boolList skip(none(3));
     skip[1] = true;
-    const boolList s = SPH::reachesAnAnchor(M, skip, anchor);
-    EXPECT_FALSE(s[0]);
-    EXPECT_FALSE(s[1]);
-    EXPECT_TRUE(s[2]);
+    expectReaches(SPH::reachesAnAnchor(M, skip, anchor), {false, false, true});
 }
 
 
