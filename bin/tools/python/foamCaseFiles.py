@@ -1,6 +1,7 @@
 """Readers of what an OpenFOAM or sphFoam case writes, shared by the
 tutorials' compare scripts: the numeric entries of a parameter
-dictionary, the run summary of a solver log, the time directories.
+dictionary, the run summary of a solver log, the time directories, the
+cell values of an ascii field.
 
 A compare script finds this folder through FOAM_SPHFOAM_TOOLS (set by
 etc/bashrc) or, run from the project's own tutorials, by its path:
@@ -78,3 +79,23 @@ def time_dirs(path):
         except ValueError:
             pass
     return [name for _, name in sorted(names)]
+
+
+def read_internal_field(path):
+    """Cell values of an ascii volScalarField (n,) or volVectorField (n, 3);
+    a uniform internalField is returned as one value."""
+    import numpy as np
+    with open(path) as f:
+        text = f.read()
+    m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
+    if m:
+        return np.array(m.group(1).strip("() ").split(), dtype=float)
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
+    if not m:
+        raise ValueError("%s: no ascii internalField (writeFormat ascii?)" % path)
+    count = int(m.group(2))
+    body = text[m.end():]
+    if m.group(1) == "scalar":
+        return np.array(body.split(None, count)[:count], dtype=float)
+    numbers = re.findall(r"\(([^()]*)\)", body[:count * 80 + 100])[:count]
+    return np.array([v.split() for v in numbers], dtype=float)

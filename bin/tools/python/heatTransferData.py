@@ -17,6 +17,8 @@ import warnings
 
 import numpy as np
 
+from foamCaseFiles import read_internal_field
+
 
 def time_dirs(case):
     """Time folders of a case, sorted by value, without 0."""
@@ -50,24 +52,9 @@ def read_parameters(path):
 
 
 def read_field(case, time, name):
-    """Cell values of an ascii volScalarField (n,) or volVectorField (n, 3);
-    a uniform internalField is returned as one value."""
-    path = os.path.join(case, time, name)
-    with open(path) as f:
-        text = f.read()
-    m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
-    if m:
-        return np.array(m.group(1).strip("() ").split(), dtype=float)
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
-    if not m:
-        raise ValueError("%s: no ascii internalField (writeFormat ascii?)" % path)
-    count = int(m.group(2))
-    body = text[m.end():]
-    if m.group(1) == "scalar":
-        values = np.array(body.split(None, count)[:count], dtype=float)
-        return values
-    numbers = re.findall(r"\(([^()]*)\)", body[:count * 80 + 100])[:count]
-    return np.array([v.split() for v in numbers], dtype=float)
+    """Cell values of an ascii field of the case's time folder
+    (foamCaseFiles.read_internal_field)."""
+    return read_internal_field(os.path.join(case, time, name))
 
 
 def grid_field(values, nx, ny):

@@ -15,8 +15,8 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.environ.get(
     "FOAM_SPHFOAM_TOOLS", os.path.join(here, "..", "..", "..", "bin", "tools")),
     "python"))
-from foamCaseFiles import (nan, read_numeric_entries, strip_comments,  # noqa: E402,F401
-                           time_dirs)
+from foamCaseFiles import (nan, read_internal_field,  # noqa: E402,F401
+                           read_numeric_entries, strip_comments, time_dirs)
 from foamCaseFiles import read_log as read_solver_log  # noqa: E402
 
 
@@ -77,20 +77,6 @@ def fv_set(case, name):
         raise RuntimeError("%s has no %s_U.xy" % (folder, name))
     out["Umag"] = np.hypot(out["Ux"], out["Uy"])
     return out
-
-
-def read_internal_field(path):
-    """The internalField of an ascii OpenFOAM field: (n,) or (n, 3)."""
-    text = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
-    if not m:
-        raise RuntimeError("%s: no nonuniform ascii internalField" % path)
-    n = int(m.group(2))
-    body = text[m.end():]
-    if m.group(1) == "vector":
-        values = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
-        return np.array([[float(v) for v in s.split()] for s in values[:n]])
-    return np.array(body[:body.index(")")].split()[:n], dtype=float)
 
 
 def fv_cells(case):
