@@ -1,7 +1,7 @@
 """Readers of what an OpenFOAM or sphFoam case writes, shared by the
 tutorials' compare scripts: the numeric entries of a parameter
 dictionary, the run summary of a solver log, the time directories, the
-cell values of an ascii field.
+cell values of an ascii field, a function object's file over restarts.
 
 A compare script finds this folder through FOAM_SPHFOAM_TOOLS (set by
 etc/bashrc) or, run from the project's own tutorials, by its path:
@@ -79,6 +79,36 @@ def time_dirs(path):
         except ValueError:
             pass
     return [name for _, name in sorted(names)]
+
+
+def read_function_object(folder, name):
+    """A function object's file postProcessing/<object>/<start>/<name> over
+    all its start-time folders (folder is postProcessing/<object>): the
+    column names of its last '# Time ...' header line (None without one)
+    and its data lines, as text. A restart writes a new start-time folder,
+    whose lines replace the earlier ones from its first time on. A run made
+    again in the same folder writes <stem>_<time><ext> beside the first
+    run's file (OpenFOAM's habit): the newest of them is read."""
+    stem, ext = os.path.splitext(name)
+    variant = re.compile(re.escape(stem) + r"(_.+)?" + re.escape(ext))
+    header, lines = None, []
+    for start in time_dirs(folder):
+        d = os.path.join(folder, start)
+        found = [os.path.join(d, f) for f in os.listdir(d) if variant.fullmatch(f)]
+        if not found:
+            continue
+        later = []
+        for line in open(max(found, key=os.path.getmtime)):
+            if line.startswith("#"):
+                fields = line[1:].split()
+                if fields and fields[0] == "Time":
+                    header = fields
+            elif line.strip():
+                later.append(line)
+        if later:
+            first = float(later[0].split()[0])
+            lines = [l for l in lines if float(l.split()[0]) < first] + later
+    return header, lines
 
 
 def read_internal_field(path):

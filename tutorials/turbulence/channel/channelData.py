@@ -15,8 +15,8 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.environ.get(
     "FOAM_SPHFOAM_TOOLS", os.path.join(here, "..", "..", "..", "bin", "tools")),
     "python"))
-from foamCaseFiles import (nan, read_numeric_entries, strip_comments,  # noqa: E402,F401
-                           time_dirs)
+from foamCaseFiles import (nan, read_function_object, read_numeric_entries,  # noqa: E402,F401
+                           strip_comments, time_dirs)
 from foamCaseFiles import read_log as read_solver_log  # noqa: E402
 
 QUANTITIES = ("u", "k", "eps", "nut")
@@ -75,14 +75,12 @@ def fv_profiles(case):
 
 def fv_wall_shear(case):
     """u*^2 = the mean of -tau_x over lowerWall and upperWall, last time."""
-    path = os.path.join(case, "postProcessing", "wallShearStress", "0",
-                        "wallShearStress.dat")
-    if not os.path.isfile(path):
-        return nan
     last = {}
-    for line in open(path):
+    for line in read_function_object(
+            os.path.join(case, "postProcessing", "wallShearStress"),
+            "wallShearStress.dat")[1]:
         words = line.replace("(", " ").replace(")", " ").split()
-        if len(words) >= 5 and not line.startswith("#"):
+        if len(words) >= 5:
             last[words[1]] = float(words[2])
     if not last:
         return nan

@@ -106,6 +106,15 @@ Foam::SPH::functionObjects::sphFunctionObject::sphFunctionObject
     // The check comes first so that an FV solver fails on the cloud, not
     // on a missing entry of the SPH dictionary
     lookupCloud(name, runTime, dict);
+
+    // writeFile names the folder after Time::startTime(), which a restored
+    // clock sets to the origin of its write grid (timeClock::restore): a
+    // restart from 15.3 wrote into 0/ as force_0.dat. OpenFOAM's folder is
+    // the time the run started from.
+    if (runTime.timeIndex() == runTime.startTimeIndex())
+    {
+        startTime_ = runTime.value();
+    }
 }
 
 

@@ -107,7 +107,9 @@ void Foam::SPH::timeClock::restore(Time& runTime, const dictionary& dict)
     // to 17 digits and more), and the particles are read from it (a restart
     // from 1.2115650656307653 looked in 1.211565065630765 and started afresh)
     const word dirName(runTime.timeName());
-    runTime.setTime(instant(t, dirName), dict.get<label>("timeIndex"));
+    const label index = dict.get<label>("timeIndex");
+    runTime.setTime(instant(t, dirName), index);
+    runTime.*clockAccess::startTimeIndexMember() = index;
 
     if (dict.get<scalar>("writeInterval") == runTime.*clockAccess::writeIntervalMember())
     {
