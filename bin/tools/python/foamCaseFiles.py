@@ -1,7 +1,9 @@
 """Readers of what an OpenFOAM or sphFoam case writes, shared by the
 tutorials' compare scripts: the numeric entries of a parameter
-dictionary, the run summary of a solver log, the time directories, the
-cell values of an ascii field, a function object's file over restarts.
+dictionary (or all its entries, $references resolved), the application,
+the run summary of a solver log, the time directories, the cell values of
+a volField and the values of an IOField (ascii or binary), a function
+object's file over restarts.
 
 A compare script finds this folder through FOAM_SPHFOAM_TOOLS (set by
 etc/bashrc) or, run from the project's own tutorials, by its path:
@@ -111,21 +113,140 @@ def read_function_object(folder, name):
     return header, lines
 
 
-def read_internal_field(path):
-    """Cell values of an ascii volScalarField (n,) or volVectorField (n, 3);
-    a uniform internalField is returned as one value."""
-    import numpy as np
-    with open(path) as f:
-        text = f.read()
-    m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
-    if m:
-        return np.array(m.group(1).strip("() ").split(), dtype=float)
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
+def _header(data):
+    """(FoamFile entries, offset just past the FoamFile block) of the bytes
+    of an OpenFOAM file."""
+    m = re.search(rb"FoamFile\s*\{([^}]*)\}", data)
     if not m:
-        raise ValueError("%s: no ascii internalField (writeFormat ascii?)" % path)
-    count = int(m.group(2))
-    body = text[m.end():]
-    if m.group(1) == "scalar":
-        return np.array(body.split(None, count)[:count], dtype=float)
-    numbers = re.findall(r"\(([^()]*)\)", body[:count * 80 + 100])[:count]
-    return np.array([v.split() for v in numbers], dtype=float)
+        raise RuntimeError("no FoamFile header")
+    entries = re.findall(rb"(\w+)\s+(\"[^\"]*\"|[^;]*);", m.group(1))
+    return {k.decode(): v.decode().strip().strip('"') for k, v in entries}, m.end()
+
+
+def _is_binary(header, path):
+    binary = header.get("format", "ascii") == "binary"
+    if binary and "scalar=64" not in header.get("arch", "scalar=64"):
+        raise RuntimeError("%s: only 64-bit binary scalars are read (arch %s)"
+                           % (path, header.get("arch")))
+    return binary
+
+
+def _skip(data, pos):
+    """pos past white space and comments."""
+    space = re.compile(rb"\s*(//[^\n]*\n|/\*.*?\*/)?", re.S)
+    while True:
+        m = space.match(data, pos)
+        if m.end() == pos:
+            return pos
+        pos = m.end()
+
+
+def _numbers(chunk):
+    return [float(v) for v in
+            re.findall(rb"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", chunk)]
+
+
+def _read_list(data, pos, nComp, binary, what):
+    """A list of nComp-component items (1: scalars or labels) at data[pos]:
+    'N(...)' or 'N{v}', ascii or binary. Returns (array, position after)."""
+    import numpy as np
+    pos = _skip(data, pos)
+    m = re.compile(rb"(\d+)\s*").match(data, pos)
+    if not m:
+        raise RuntimeError("%s: expected a list size at byte %d" % (what, pos))
+    size, pos = int(m.group(1)), m.end()
+    if data[pos:pos + 1] == b"{":
+        end = data.index(b"}", pos)
+        item = np.array(_numbers(data[pos + 1:end]), float)
+        values = np.tile(item[:nComp], (size, 1))
+        return (values if nComp > 1 else values[:, 0]), end + 1
+    if data[pos:pos + 1] != b"(":
+        raise RuntimeError("%s: expected '(' after the size %d" % (what, size))
+    pos += 1
+    if binary:
+        nBytes = 8*nComp*size
+        values = np.frombuffer(data[pos:pos + nBytes], dtype="<f8")
+        if values.size != nComp*size or data[pos + nBytes:pos + nBytes + 1] != b")":
+            raise RuntimeError("%s: binary list of %d items is cut short" % (what, size))
+        return (values.reshape(size, nComp) if nComp > 1 else values.copy()), \
+            pos + nBytes + 1
+    depth, end = 1, pos
+    while depth:
+        c = data[end:end + 1]
+        if not c:
+            raise RuntimeError("%s: unterminated list" % what)
+        depth += {b"(": 1, b")": -1}.get(c, 0)
+        end += 1
+    values = np.array(_numbers(data[pos:end - 1]), float)
+    if values.size != nComp*size:
+        raise RuntimeError("%s: %d numbers for %d items of %d components"
+                           % (what, values.size, size, nComp))
+    return (values.reshape(size, nComp) if nComp > 1 else values), end
+
+
+def _components(text):
+    """Components of an OpenFOAM type name: scalar 1, vector 3, ..."""
+    for name, n in (("scalar", 1), ("label", 1), ("vector2D", 2), ("vector", 3),
+                    ("symmTensor", 6), ("tensor", 9)):
+        if name in text:
+            return n
+    return None
+
+
+def read_iofield(path, nComp):
+    """An IOField (the particle files: constant/sphMesh/fluid/positions,
+    <time>/lagrangian/sph/U, ...), ascii or binary with 64-bit scalars:
+    (n,) for nComp 1, else (n, nComp)."""
+    data = open(path, "rb").read()
+    header, pos = _header(data)
+    values, _ = _read_list(data, pos, nComp, _is_binary(header, path), path)
+    return values
+
+
+def read_internal_field(path, nComp=None):
+    """Cell values of a volField, ascii or binary: (n,) for a scalar field,
+    (n, nComp) otherwise, nComp from List<type> or the class when not
+    given; a uniform internalField is returned as its one value."""
+    import numpy as np
+    data = open(path, "rb").read()
+    header, pos = _header(data)
+    m = re.compile(rb"internalField\s+(uniform|nonuniform)\s*").search(data, pos)
+    if not m:
+        raise RuntimeError("%s: no internalField" % path)
+    pos = m.end()
+    if m.group(1) == b"uniform":
+        return np.array(_numbers(data[pos:data.index(b";", pos)]), float)
+    m = re.compile(rb"List<(\w+)>\s*").match(data, pos)
+    if m:
+        pos = m.end()
+    nComp = nComp or _components(m.group(1).decode() if m else header.get("class", ""))
+    if not nComp:
+        raise RuntimeError("%s: the field's type is not known (class %s)"
+                           % (path, header.get("class")))
+    values, _ = _read_list(data, pos, nComp, _is_binary(header, path), path)
+    return values
+
+
+def application(case):
+    """The application named in <case>/system/controlDict, or None."""
+    path = os.path.join(case, "system", "controlDict")
+    if not os.path.isfile(path):
+        return None
+    m = re.search(r"^\s*application\s+(\w+)\s*;",
+                  strip_comments(open(path).read()), flags=re.M)
+    return m.group(1) if m else None
+
+
+def read_entries(path):
+    """The plain 'key value;' entries of a dictionary outside its FoamFile
+    header, as strings, $name references to other entries resolved."""
+    text = re.sub(r"FoamFile\s*\{[^}]*\}", "", strip_comments(open(path).read()))
+    raw = dict(re.findall(r"^\s*(\w+)\s+([^;{}]+?)\s*;", text, flags=re.M))
+    values = {}
+    for key, value in raw.items():
+        seen = set()
+        while value.startswith("$") and value[1:] in raw and value not in seen:
+            seen.add(value)
+            value = raw[value[1:]]
+        values[key] = value
+    return values

@@ -7,7 +7,10 @@ Description
     chain to an anchor, a set coupled only among itself, a set joined to
     the anchored rows by a kernel's tail (1e-42) only, links that run one
     way, Dirichlet rows skipped, and rows marked as anchors; each verdict
-    against Eigen's SparseLU (singular or not).
+    against Eigen's SparseLU (singular or not). And two whose answer does
+    not depend on the order of the rows: a chain numbered back and forth
+    around its anchor, and random matrices against a plain fixed point of
+    "a row reaches when a row it refers to does".
 
 \*---------------------------------------------------------------------------*/
 
@@ -15,6 +18,7 @@ Description
 #include "floatingRows.H"
 
 #include <Eigen/SparseLU>
+#include <random>
 
 using namespace Foam;
 
@@ -161,6 +165,85 @@ TEST(floatingRows, markedAnchorsAndSkippedRows)
     boolList skip(none(3));
     skip[1] = true;
     expectReaches(SPH::reachesAnAnchor(M, skip, anchor), {false, false, true});
+}
+
+
+TEST(floatingRows, aChainNumberedAgainstEverySweep)
+{
+    // The anchor at row 20; step c of the chain alternates around it
+    // (21, 19, 22, 18, ...) and refers to step c - 1: a pass over the rows
+    // in either direction reaches one more step only. The last step refers
+    // to nothing reached and floats.
+    const label n = 41, steps = 30;
+    std::vector<std::tuple<int, int, scalar>> links;
+    label previous = 20;
+    for (label c = 1; c <= steps; ++c)
+    {
+        const label row = c % 2 ? 20 + (c + 1)/2 : 20 - c/2;
+        if (c < steps) links.emplace_back(row, previous, 1);
+        previous = row;
+    }
+    std::vector<scalar> extra(n, 1);
+    std::vector<bool> expected(n, true);
+    for (const auto& link : links) extra[std::get<0>(link)] = 0;
+    extra[previous] = 0;
+    links.emplace_back(previous, previous == 35 ? 5 : 35, 0);
+    expected[previous] = false;
+
+    const auto M = matrix(n, links, extra);
+    expectReaches(SPH::reachesAnAnchor(M, none(n), none(n)), expected);
+}
+
+
+TEST(floatingRows, randomMatricesInRandomOrderAgainstAFixedPoint)
+{
+    std::mt19937 random(2026);
+    for (label trial = 0; trial < 40; ++trial)
+    {
+        SCOPED_TRACE("trial " + std::to_string(trial));
+        const label n = 150;
+        std::uniform_int_distribution<int> row(0, n - 1), count(0, 3);
+        std::uniform_real_distribution<scalar> unit(0, 1);
+        std::vector<std::tuple<int, int, scalar>> links;
+        std::vector<scalar> extra(n, 0);
+        boolList skip(none(n)), anchor(none(n));
+        for (label i = 0; i < n; ++i)
+        {
+            for (int k = count(random); k > 0; --k)
+            {
+                const int j = row(random);
+                if (j != i) links.emplace_back(i, j, unit(random) < 0.1 ? 1e-42 : 1);
+            }
+            const scalar u = unit(random);
+            if (u < 0.02) extra[i] = 0.5;
+            else if (u < 0.03) anchor[i] = true;
+            else if (u < 0.06) skip[i] = true;
+        }
+
+        // The plain fixed point, every row again until none changes; a link
+        // counts from 1e-10 of its row's diagonal (a row of tails only
+        // links by them)
+        const auto M = matrix(n, links, extra);
+        std::vector<scalar> diag(extra);
+        for (const auto& [i, j, w] : links) diag[i] += w;
+        std::vector<bool> expected(n);
+        for (label i = 0; i < n; ++i)
+        {
+            expected[i] = !skip[i] && (anchor[i] || extra[i] > 0);
+        }
+        for (bool changed = true; changed;)
+        {
+            changed = false;
+            for (const auto& [i, j, w] : links)
+            {
+                if (!expected[i] && !skip[i] && expected[j] && w > 1e-10*diag[i])
+                {
+                    expected[i] = changed = true;
+                }
+            }
+        }
+        expectReaches(SPH::reachesAnAnchor(M, skip, anchor), expected);
+    }
 }
 
 

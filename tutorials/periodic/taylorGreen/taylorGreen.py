@@ -14,43 +14,23 @@ E(t) = U0^2/4 F(t)^2 = U0^2/4 exp(-16 pi^2 nu t/L^2).
 import math
 import os
 import re
-import struct
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.environ.get("FOAM_SPHFOAM_TOOLS", os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "bin", "tools")),
+    "python"))
+from foamCaseFiles import (application, read_entries, read_internal_field,  # noqa: E402,F401
+                           read_iofield, time_dirs)
 
 
 # ---------------------------------------------------------------- dictionaries
 
-def strip_comments(text):
-    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
-    return re.sub(r"//[^\n]*", "", text)
-
-
 def read_parameters(case):
     """The plain 'key value;' entries of <case>/system/taylorGreenParameters
     (outside FoamFile), as strings, $name references resolved."""
-    path = os.path.join(case, "system", "taylorGreenParameters")
-    text = strip_comments(open(path).read())
-    text = re.sub(r"FoamFile\s*\{[^}]*\}", "", text)
-    raw = dict(re.findall(r"^\s*(\w+)\s+([^;{}]+?)\s*;", text, flags=re.M))
-    values = {}
-    for key, value in raw.items():
-        seen = set()
-        while value.startswith("$") and value[1:] in raw and value not in seen:
-            seen.add(value)
-            value = raw[value[1:]]
-        values[key] = value
-    return values
-
-
-def application(case):
-    """The application named in <case>/system/controlDict, or None."""
-    path = os.path.join(case, "system", "controlDict")
-    if not os.path.isfile(path):
-        return None
-    m = re.search(r"^\s*application\s+(\w+)\s*;",
-                  strip_comments(open(path).read()), flags=re.M)
-    return m.group(1) if m else None
+    return read_entries(os.path.join(case, "system", "taylorGreenParameters"))
 
 
 # ---------------------------------------------------------------- the flow
@@ -113,99 +93,6 @@ FoamFile
 FOOTER = "\n// ************************************************************************* //\n"
 
 
-def _header_end(data):
-    """(FoamFile entries, offset just past the FoamFile block) of the bytes
-    of an OpenFOAM file."""
-    m = re.search(rb"FoamFile\s*\{([^}]*)\}", data)
-    if not m:
-        raise RuntimeError("no FoamFile header")
-    entries = re.findall(rb"(\w+)\s+(\"[^\"]*\"|[^;]*);", m.group(1))
-    return {k.decode(): v.decode().strip().strip('"') for k, v in entries}, m.end()
-
-
-def _skip(data, pos):
-    """pos past white space and comments."""
-    while True:
-        m = re.compile(rb"\s*(//[^\n]*\n|/\*.*?\*/)?", re.S).match(data, pos)
-        if m.end() == pos:
-            return pos
-        pos = m.end()
-
-
-def _read_list(data, pos, nComp, binary, what):
-    """A list of n-component items (nComp 1: scalars or labels) starting at
-    data[pos]: 'N(...)' or 'N{v}'. Returns (array, position after it)."""
-    pos = _skip(data, pos)
-    m = re.compile(rb"(\d+)\s*").match(data, pos)
-    if not m:
-        raise RuntimeError("%s: expected a list size at byte %d" % (what, pos))
-    size = int(m.group(1))
-    pos = m.end()
-    if data[pos:pos + 1] == b"{":
-        end = data.index(b"}", pos)
-        item = _numbers(data[pos + 1:end])
-        return np.tile(np.array(item, float), (size, 1)).reshape(size, -1)[:, :nComp] \
-            if nComp > 1 else np.full(size, item[0]), end + 1
-    if data[pos:pos + 1] != b"(":
-        raise RuntimeError("%s: expected '(' after the size %d" % (what, size))
-    pos += 1
-    if binary:
-        nBytes = 8*nComp*size
-        values = np.frombuffer(data[pos:pos + nBytes], dtype="<f8")
-        if values.size != nComp*size or data[pos + nBytes:pos + nBytes + 1] != b")":
-            raise RuntimeError("%s: binary list of %d items is cut short" % (what, size))
-        return values.reshape(size, nComp) if nComp > 1 else values.copy(), pos + nBytes + 1
-    depth, end = 1, pos
-    while depth:
-        c = data[end:end + 1]
-        if not c:
-            raise RuntimeError("%s: unterminated list" % what)
-        depth += {b"(": 1, b")": -1}.get(c, 0)
-        end += 1
-    values = np.array(_numbers(data[pos:end - 1]), float)
-    if values.size != nComp*size:
-        raise RuntimeError("%s: %d numbers for %d items of %d components"
-                           % (what, values.size, size, nComp))
-    return values.reshape(size, nComp) if nComp > 1 else values, end
-
-
-def _numbers(chunk):
-    return [float(v) for v in re.findall(rb"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", chunk)]
-
-
-def read_iofield(path, nComp):
-    """An IOField (the particle files: constant/sphMesh/fluid/positions,
-    <time>/lagrangian/sph/U, ...), ascii or binary with 64-bit scalars."""
-    data = open(path, "rb").read()
-    header, pos = _header_end(data)
-    binary = header.get("format", "ascii") == "binary"
-    if binary and "scalar=64" not in header.get("arch", "scalar=64"):
-        raise RuntimeError("%s: only 64-bit binary scalars are read (arch %s)"
-                           % (path, header.get("arch")))
-    values, _ = _read_list(data, pos, nComp, binary, path)
-    return values
-
-
-def read_internal_field(path, nComp):
-    """The internalField of a volField file: uniform or nonuniform, ascii
-    or binary."""
-    data = open(path, "rb").read()
-    header, pos = _header_end(data)
-    binary = header.get("format", "ascii") == "binary"
-    m = re.compile(rb"internalField\s+(uniform|nonuniform)\s*").search(data, pos)
-    if not m:
-        raise RuntimeError("%s: no internalField" % path)
-    pos = m.end()
-    if m.group(1) == b"uniform":
-        end = data.index(b";", pos)
-        return np.array(_numbers(data[pos:end]), float)
-    m = re.compile(rb"List<\w+>\s*").match(data, pos)
-    if m:
-        pos = m.end()
-    values, _ = _read_list(data, pos, nComp, binary, path)
-    return values
-
-
 def write_internal_field(path, cls, location, obj, values, comment):
     """Rewrite path with internalField nonuniform values (one per cell or
     fluid particle), keeping the dimensions and boundaryField of the
@@ -235,19 +122,6 @@ def write_internal_field(path, cls, location, obj, values, comment):
     with open(tmp, "w") as f:
         f.write("".join(out))
     os.replace(tmp, path)
-
-
-def time_dirs(path):
-    """The time folders of path, sorted by value: [(t, name)]."""
-    if not os.path.isdir(path):
-        return []
-    times = []
-    for name in os.listdir(path):
-        try:
-            times.append((float(name), name))
-        except ValueError:
-            pass
-    return sorted(times)
 
 
 # ---------------------------------------------------------------- errors
