@@ -87,8 +87,10 @@ def read_function_object(folder, name):
     """A function object's file postProcessing/<object>/<start>/<name> over
     all its start-time folders (folder is postProcessing/<object>): the
     column names of its last '# Time ...' header line (None without one)
-    and its data lines, as text. A restart writes a new start-time folder,
-    whose lines replace the earlier ones from its first time on. A run made
+    and its data lines, as text, in time order. A restart writes a new
+    start-time folder, whose lines replace the earlier ones between its
+    first and last times (a restart from an earlier time that stopped
+    short leaves the first run's lines after it). A run made
     again in the same folder writes <stem>_<time><ext> beside the first
     run's file (OpenFOAM's habit): the newest of them is read."""
     stem, ext = os.path.splitext(name)
@@ -108,8 +110,9 @@ def read_function_object(folder, name):
             elif line.strip():
                 later.append(line)
         if later:
-            first = float(later[0].split()[0])
-            lines = [l for l in lines if float(l.split()[0]) < first] + later
+            first, last = (float(later[k].split()[0]) for k in (0, -1))
+            kept = [l for l in lines if not first <= float(l.split()[0]) <= last]
+            lines = sorted(kept + later, key=lambda l: float(l.split()[0]))
     return header, lines
 
 
