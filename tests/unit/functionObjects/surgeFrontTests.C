@@ -10,6 +10,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "functionObjectTestTools.H"
+#include "timeClock.H"
 #include "surgeFront.H"
 
 using namespace Foam;
@@ -143,6 +144,24 @@ TEST(surgeFront, fileHasTimeAndFront)
     row >> t >> front;
     EXPECT_NEAR(t, 0.3, 1e-12);
     EXPECT_NEAR(front, tank.spec.blockWidth - 0.5*tank.spec.dr, 1e-8);  // 8 digits written
+}
+
+
+TEST(surgeFront, aRestartedRunWritesIntoTheFolderOfItsStart)
+{
+    // A run restarted from 0.7 keeps Time's startTime at its write grid's
+    // origin, 0 (timeClock::restore); its objects, also one added to
+    // controlDict later, write into front/0.7 as OpenFOAM's would
+    sphTest::sphTank tank("frontRestart");
+    tank.runTime->setTime(0.7, 7);
+    SPH::timeClock::registerRunStart(*tank.runTime);
+    tank.runTime->setTime(0.9, 9);
+    auto fo = tank.fo("front", "type surgeFront;");
+    fo->execute();
+    fo->write();
+    EXPECT_TRUE(isFile(tank.postProcessing("front/0.7/surgeFront.dat")));
+    EXPECT_FALSE(isDir(tank.postProcessing("front/0")));
+    EXPECT_FALSE(isDir(tank.postProcessing("front/0.9")));
 }
 
 

@@ -5,6 +5,7 @@
 #include "sphFunctionObject.H"
 #include "Time.H"
 #include "scalarList.H"
+#include "timeClock.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -110,11 +111,9 @@ Foam::SPH::functionObjects::sphFunctionObject::sphFunctionObject
     // writeFile names the folder after Time::startTime(), which a restored
     // clock sets to the origin of its write grid (timeClock::restore): a
     // restart from 15.3 wrote into 0/ as force_0.dat. OpenFOAM's folder is
-    // the time the run started from.
-    if (runTime.timeIndex() == runTime.startTimeIndex())
-    {
-        startTime_ = runTime.value();
-    }
+    // the time the run started from, also for an object added to
+    // controlDict during the run.
+    startTime_ = timeClock::runStart(runTime);
 }
 
 

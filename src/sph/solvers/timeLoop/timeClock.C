@@ -5,6 +5,7 @@
 #include "timeClock.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
+#include "uniformDimensionedFields.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -55,6 +56,9 @@ void startAt(Time& runTime, const instant& t)
     runTime.*clockAccess::startTimeIndexMember() = index;
     runTime.*clockAccess::writeTimeIndexMember() = 0;
 }
+
+//- Name of the run's start time on Time's registry
+const word runStartName("sphRunStart");
 
 } // End anonymous namespace
 
@@ -123,6 +127,39 @@ void Foam::SPH::timeClock::restore(Time& runTime, const dictionary& dict)
         runTime.*clockAccess::startTimeMember() = t;
         runTime.*clockAccess::writeTimeIndexMember() = 0;
     }
+}
+
+
+void Foam::SPH::timeClock::registerRunStart(Time& runTime)
+{
+    const dimensionedScalar start("runStart", dimTime, runTime.value());
+    if (runTime.foundObject<uniformDimensionedScalarField>(runStartName))
+    {
+        runTime.lookupObjectRef<uniformDimensionedScalarField>(runStartName) =
+            start;
+        return;
+    }
+    runTime.store
+    (
+        new uniformDimensionedScalarField
+        (
+            IOobject
+            (
+                runStartName, runTime.timeName(), runTime,
+                IOobject::NO_READ, IOobject::NO_WRITE, true
+            ),
+            start
+        )
+    );
+}
+
+
+Foam::scalar Foam::SPH::timeClock::runStart(const Time& runTime)
+{
+    return
+        runTime.foundObject<uniformDimensionedScalarField>(runStartName)
+      ? runTime.lookupObject<uniformDimensionedScalarField>(runStartName).value()
+      : runTime.startTime().value();
 }
 
 

@@ -427,6 +427,7 @@ void Foam::SPH::timeLoop::prepareStart(Time& runTime, const word& stateName)
     );
     timeClock::restore(runTime, state);
     timeClock::checkFreshStart(runTime);
+    timeClock::registerRunStart(runTime);
 }
 
 
