@@ -21,8 +21,7 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.environ.get("FOAM_SPHFOAM_TOOLS", os.path.join(
     os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "bin", "tools")),
     "python"))
-from foamCaseFiles import (application, read_entries, read_internal_field,  # noqa: E402,F401
-                           read_iofield, time_dirs)
+from foamCaseFiles import read_entries  # noqa: E402
 
 
 # ---------------------------------------------------------------- dictionaries

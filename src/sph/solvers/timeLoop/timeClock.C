@@ -111,9 +111,7 @@ void Foam::SPH::timeClock::restore(Time& runTime, const dictionary& dict)
     // to 17 digits and more), and the particles are read from it (a restart
     // from 1.2115650656307653 looked in 1.211565065630765 and started afresh)
     const word dirName(runTime.timeName());
-    const label index = dict.get<label>("timeIndex");
-    runTime.setTime(instant(t, dirName), index);
-    runTime.*clockAccess::startTimeIndexMember() = index;
+    runTime.setTime(instant(t, dirName), dict.get<label>("timeIndex"));
 
     if (dict.get<scalar>("writeInterval") == runTime.*clockAccess::writeIntervalMember())
     {
