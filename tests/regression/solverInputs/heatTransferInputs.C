@@ -151,4 +151,39 @@ TEST(heatTransferInputs, badWallTemperatureSchemes)
 }
 
 
+
+TEST(heatTransferInputs, heatSchemeImplicit)
+{
+    // Runs with solvers.T, and prints the T solve's line each step
+    const sphTest::solverRun good = runHeated
+    (
+        "implicitGood", goodT,
+        "echo 'heatScheme implicit;' >> system/sphSchemes && sed -i"
+        " '/^solvers/{n;s/^{/{\\n    T { solver BiCGStab; preconditioner"
+        " ILU0; tolerance 1e-10; relTol 0; }/}' system/sphSolution"
+    );
+    EXPECT_EQ(good.status, 0) << good.tail();
+    EXPECT_TRUE(good.has("backward Euler (heatScheme implicit)")) << good.tail();
+    EXPECT_TRUE(good.has("Solving for T")) << good.tail();
+
+    expectError
+    (
+        runHeated
+        (
+            "implicitNoSolver", goodT,
+            "echo 'heatScheme implicit;' >> system/sphSchemes"
+        ),
+        {"heatScheme implicit", "has no entry T", "sphSolution"}
+    );
+    expectError
+    (
+        runHeated
+        (
+            "schemeWord", goodT,
+            "echo 'heatScheme crankNicolson;' >> system/sphSchemes"
+        ),
+        {"crankNicolson is not in enumeration", "explicit", "implicit", "sphSchemes"}
+    );
+}
+
 // ************************************************************************* //

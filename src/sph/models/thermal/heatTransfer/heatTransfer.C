@@ -11,6 +11,7 @@
 #include "Time.H"
 #include "IOdictionary.H"
 #include "checkedEntry.H"
+#include "OStringStream.H"
 #include <cmath>
 
 // * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
@@ -62,6 +63,16 @@ namespace
 
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace
+{
+    const Foam::Enum<bool> heatSchemeNames
+    ({
+        { false, "explicit" },
+        { true, "implicit" },
+    });
+}
+
 
 const Foam::Enum<Foam::SPH::heatTransfer::vertexForm>
 Foam::SPH::heatTransfer::vertexFormNames
@@ -202,6 +213,8 @@ Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
     ghRef_(0),
     removeMean_(false),
     fluxMinDistance_(1),
+    implicit_(false),
+    stopIfNotConverged_(true),
     nut_(nullptr)
 {
     // Eq. (43) of Leroy et al. 2015: sphSchemes' meanBuoyancy
@@ -226,6 +239,7 @@ Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
     (
         "vertexTemperature", schemes, vertexForm::shepard
     );
+    implicit_ = heatSchemeNames.getOrDefault("heatScheme", schemes, false);
     fluxMinDistance_ = checkedScalar
     (
         schemes, "isothermalFluxMinDistance", 1, {0, 1, true},
@@ -251,6 +265,13 @@ Foam::SPH::heatTransfer::heatTransfer(const Time& runTime, particles& parts)
         << nl
         << "    isothermal walls: dr_as = max(d_as, " << fluxMinDistance_
         << " dr) in eqs. (34)-(37)" << nl
+        << "    heat equation: "
+        << (
+               implicit_
+             ? "backward Euler (heatScheme implicit)"
+             : "explicit, as printed (heatScheme explicit)"
+           )
+        << nl
         << "    vertex T of adiabatic and flux walls: "
         << (
                walls_.form == vertexForm::linear
@@ -284,6 +305,10 @@ void Foam::SPH::heatTransfer::connect
     readWalls(walls, coupling.nFluid);
     KE_.setSize(parts_.size(), props_.K);
     L_.setSize(parts_.size(), Zero);
+    if (implicit_)
+    {
+        connectImplicit();
+    }
     if (fresh)
     {
         readInitial();
@@ -293,6 +318,11 @@ void Foam::SPH::heatTransfer::connect
 
 void Foam::SPH::heatTransfer::correct(const scalar dt)
 {
+    if (implicit_)
+    {
+        correctImplicit(dt);
+        return;
+    }
     const turbulenceCoupling& w = *work_;
     scalarField& T = parts_.field<scalar>("T");
 
@@ -386,6 +416,10 @@ void Foam::SPH::heatTransfer::updatePrgh(const scalar)
 
 Foam::scalar Foam::SPH::heatTransfer::maxDeltaT(const scalar h) const
 {
+    if (implicit_)
+    {
+        return VGREAT;
+    }
     scalar KMax = props_.K;
     if (nut_)
     {
@@ -398,8 +432,35 @@ Foam::scalar Foam::SPH::heatTransfer::maxDeltaT(const scalar h) const
 }
 
 
+void Foam::SPH::heatTransfer::printStep(Ostream& os) const
+{
+    if (implicit_)
+    {
+        lastSolve_.print(os);
+    }
+}
+
+
+void Foam::SPH::heatTransfer::expireReuse() const
+{
+    if (solverT_)
+    {
+        solverT_->expirePreconditioner();
+    }
+}
+
+
 Foam::string Foam::SPH::heatTransfer::description() const
 {
+    if (implicit_)
+    {
+        OStringStream os;
+        if (solverT_) solverT_->write(os);
+        return
+            "T^{n+1} = T^n + dt L{K, T^{n+1}} (Leroy et al. 2015, eq. (17),"
+            " backward Euler), walls (31)-(34), the vertex T of (32) from T^n;"
+            " K = nu/Pr = " + Foam::name(props_.K) + "; " + os.str();
+    }
     return
         "T^{n+1} = T^n + dt L{K_E, T^n} (Leroy et al. 2015, eq. (17)), walls"
         " (31)-(34)" + string(turbulent_.law ? ", (35)-(38) turbulent" : "")

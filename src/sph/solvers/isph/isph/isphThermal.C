@@ -10,6 +10,7 @@ Description
 
 #include "isph.H"
 #include "memberStage.H"
+#include "heatEquation.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -34,14 +35,7 @@ void Foam::SPH::isph::connectThermal()
 
 void Foam::SPH::isph::addHeatTransfer()
 {
-    stages_.add
-    (
-        new memberStage<heatTransfer>
-        (
-            "heatTransfer", {"T"}, {"T"}, thermal_->description(),
-            *thermal_, &heatTransfer::correct
-        )
-    );
+    stages_.add(new heatEquation(*thermal_));
 }
 
 

@@ -102,6 +102,14 @@ void Foam::SPH::implicitViscousPrediction::execute(const scalar dt)
 {
     isphWork& w = work_;
     setOldValues(dt);
+    // The force stages' dt f at the vertex particles (buoyancy, eq. (45))
+    const label n = w.Ustar.size();
+    vertexForce_.resize(n - w.nFluid);
+    forAll(vertexForce_, v)
+    {
+        vertexForce_[v] =
+            afterForces_ ? w.Ustar[w.nFluid + v] : vector2D::zero;
+    }
     if (!(w.nu > 0))
     {
         w.Ustar = uOld_;
@@ -109,6 +117,10 @@ void Foam::SPH::implicitViscousPrediction::execute(const scalar dt)
     else
     {
         solve(dt);
+    }
+    forAll(vertexForce_, v)
+    {
+        w.Ustar[w.nFluid + v] += vertexForce_[v];
     }
 
     // u** = w - dt a^n: the pressure is the projection's
