@@ -61,7 +61,7 @@ void Foam::SPH::heatTransfer::connectImplicit()
                 IOobject::MUST_READ, IOobject::NO_WRITE, false
             )
         );
-        FatalIOErrorInFunction(schemes)
+        FatalIOErrorInFunction(schemes.lookup("heatScheme"))
             << "heatScheme implicit in a RAS run (0/k): the implicit step"
             << " takes the laminar wall flux (34), and the explicit k-epsilon"
             << " model bounds the time step anyway; use heatScheme explicit"
