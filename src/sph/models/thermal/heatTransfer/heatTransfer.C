@@ -351,7 +351,6 @@ void Foam::SPH::heatTransfer::addBuoyancy
 (
     const scalar dt,
     UList<vector2D>& Ustar,
-    const bool vertices,
     List<vector2D>& wallForce
 )
 {
@@ -373,8 +372,7 @@ void Foam::SPH::heatTransfer::addBuoyancy
         }
         mean = buoyancy(g_, props_.beta, VT/V, props_.TRef);
     }
-    const label n = vertices ? T.size() : w.nFluid;
-    for (label i = 0; i < n; ++i)
+    forAll(T, i)
     {
         Ustar[i] += dt*(buoyancy(g_, props_.beta, T[i], props_.TRef) - mean);
     }
