@@ -174,14 +174,7 @@ namespace
 
             // Round-off of sums of terms up to the largest |A_ab u_b|
             // (the diagonal's rho/dt u cancels in b - A u): 1e-11 of it
-            scalar scale = 0;
-            for (int i = 0; i < A.outerSize(); ++i)
-            {
-                for (SPH::sparseMatrix::InnerIterator it(A, i); it; ++it)
-                {
-                    scale = max(scale, mag(it.value()*x[it.col()]));
-                }
-            }
+            const scalar scale = largestTerm(A, x);
             label nWall = 0;
             for (label a = 0; a < c.nFluid; ++a)
             {

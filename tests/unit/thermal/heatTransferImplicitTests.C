@@ -21,8 +21,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
-#include "../operators/operatorTestTools.H"
-#include "heatTransfer.H"
+#include "heatedBoxCase.H"
+#include "../operators/laplacianMatrixTestTools.H"
 #include "implicitDiffusionStep.H"
 
 #include <iostream>
@@ -33,55 +33,15 @@ using namespace operatorTest;
 
 namespace
 {
-    //- The unit box with walls hot (x = 0, T = 1), cold (x = 1, T = 0),
-    //- floor and lid: adiabatic, or the lid a flux (OpenFOAM's gradient G
-    //- along the outward normal)
+    //- The heated box (heatedBoxCase.H) with its explicit operator
     struct cavity
+    :
+        public heatedBoxCase
     {
-        latticeCase c;
-        SPH::heatTransfer::wallData d;
-
         cavity(const scalar dr, const bool lidFlux)
         :
-            c
-            (
-                "floor { type line; points ((0 0) (1 0)); }"
-                "cold { type line; points ((1 0) (1 1)); }"
-                "lid { type line; points ((1 1) (0 1)); }"
-                "hot { type line; points ((0 1) (0 0)); }",
-                dr, layout::nodal, {0, 0}, {1, 1}
-            )
-        {
-            const label nS = c.walls.segments().size();
-            const label nV = c.walls.points().size();
-            d.kind.setSize(nS, SPH::heatTransfer::adiabatic);
-            d.gradient.setSize(nS, Zero);
-            d.fixed.setSize(nV, false);
-            d.value.setSize(nV, Zero);
-            d.vertexSegments.setSize(nV);
-            forAll(c.walls.segments(), s)
-            {
-                const word& patch =
-                    c.walls.patchNames()[c.walls.segmentPatch()[s]];
-                const bool side = patch == "hot" || patch == "cold";
-                if (side) d.kind[s] = SPH::heatTransfer::isothermal;
-                if (patch == "lid" && lidFlux)
-                {
-                    d.kind[s] = SPH::heatTransfer::fluxImposed;
-                    d.gradient[s] = 0.7;
-                }
-                const labelPair& e = c.walls.segments()[s];
-                for (const label v : {e.first(), e.second()})
-                {
-                    d.vertexSegments[v].append(s);
-                    if (side)
-                    {
-                        d.fixed[v] = true;
-                        d.value[v] = patch == "hot" ? 1 : 0;
-                    }
-                }
-            }
-        }
+            heatedBoxCase(dr, lidFlux ? 0.7 : 0)
+        {}
 
         //- The explicit L{K, T} of the fluid (vertex T of (32) set first)
         scalarList explicitL(scalarList& T, const scalar K, const scalar floor)
@@ -177,14 +137,7 @@ namespace
 
         // Round-off of sums of terms up to the largest |A_ab T_b| (the
         // diagonal's T/dt cancels in b - A T)
-        scalar scale = 0;
-        for (int i = 0; i < A.outerSize(); ++i)
-        {
-            for (SPH::sparseMatrix::InnerIterator it(A, i); it; ++it)
-            {
-                scale = max(scale, mag(it.value()*x[it.col()]));
-            }
-        }
+        const scalar scale = laplacianTest::largestTerm(A, x);
         scalar worst = 0;
         label nWall = 0;
         for (label a = 0; a < c.nFluid; ++a)

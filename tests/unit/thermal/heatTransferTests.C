@@ -23,7 +23,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
-#include "../operators/operatorTestTools.H"
+#include "heatedBoxCase.H"
 #include "heatTransfer.H"
 #include "thermalWallFunction.H"
 #include "usawOperators.H"
@@ -180,40 +180,10 @@ TEST(heatTransfer, wallTermsDriveTowardsTheWallTemperature)
 //- the worst |T_v - (1 - x_v)| over the adiabatic vertices
 scalar adiabaticVertexError(const SPH::heatTransfer::vertexForm form)
 {
-    const scalar dr = 0.05;
-    latticeCase c
-    (
-        "floor { type line; points ((0 0) (1 0)); }"
-        "cold { type line; points ((1 0) (1 1)); }"
-        "lid { type line; points ((1 1) (0 1)); }"
-        "hot { type line; points ((0 1) (0 0)); }",
-        dr, layout::nodal, {0, 0}, {1, 1}
-    );
+    const heatedBoxCase box(0.05, 0, form);
+    const latticeCase& c = box.c;
+    const SPH::heatTransfer::wallData& d = box.d;
     const label n = c.size();
-    SPH::heatTransfer::wallData d;
-    const label nS = c.walls.segments().size();
-    const label nV = c.walls.points().size();
-    d.kind.setSize(nS, SPH::heatTransfer::adiabatic);
-    d.gradient.setSize(nS, Zero);
-    d.fixed.setSize(nV, false);
-    d.value.setSize(nV, Zero);
-    d.vertexSegments.setSize(nV);
-    d.form = form;
-    forAll(c.walls.segments(), s)
-    {
-        const word& patch = c.walls.patchNames()[c.walls.segmentPatch()[s]];
-        const bool side = patch == "hot" || patch == "cold";
-        if (side) d.kind[s] = SPH::heatTransfer::isothermal;
-        for (const label v : {c.walls.segments()[s].first(), c.walls.segments()[s].second()})
-        {
-            d.vertexSegments[v].append(s);
-            if (side)
-            {
-                d.fixed[v] = true;
-                d.value[v] = patch == "hot" ? 1 : 0;
-            }
-        }
-    }
     scalarList T(n, -1.0);
     for (label i = 0; i < c.nFluid; ++i) T[i] = 1 - c.x[i].x();
     SPH::dispatch(*c.W, [&](const auto& W)
