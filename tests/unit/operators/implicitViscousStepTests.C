@@ -172,14 +172,15 @@ namespace
             }
             const SPH::vectorN r(b - A*x);
 
-            // Round-off of sums of terms up to the largest |A_ab u_b|
-            // (the diagonal's rho/dt u cancels in b - A u): 1e-11 of it
+            // The rows are the equation over rho. Round-off of sums of
+            // terms up to the largest |A_ab u_b| (the diagonal's u/dt
+            // cancels in b - A u): 1e-11 of it
             const scalar scale = largestTerm(A, x);
             label nWall = 0;
             for (label a = 0; a < c.nFluid; ++a)
             {
                 nWall += c.usaw->offsets()[a + 1] > c.usaw->offsets()[a];
-                EXPECT_NEAR(r[a], L[a][d], 1e-11*scale)
+                EXPECT_NEAR(r[a], L[a][d]/rho, 1e-11*scale)
                     << what << ", component " << label(d) << ", particle " << a;
             }
             EXPECT_GT(nWall, 0);

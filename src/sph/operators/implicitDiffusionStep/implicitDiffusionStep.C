@@ -19,6 +19,7 @@ Foam::SPH::implicitDiffusionStep::implicitDiffusionStep
     Sp_(V.size(), Zero),
     robinK_(walls.segmentParticles().size(), Zero),
     robinG_(walls.segmentParticles().size(), Zero),
+    rate_(V.size(), Zero),
     source_(V.size(), Zero),
     lap_(nbrs, walls, V, nFluid)
 {

@@ -22,7 +22,7 @@ void Foam::SPH::implicitDiffusionStep::assemble
     scalarList& f = lap_.dirichletValues();
     forAll(phi, i)
     {
-        source_[i] = i < nFluid_ ? -phi[i]/dt : 0;
+        source_[i] = i < nFluid_ ? -(phi[i]/dt + rate_[i]) : 0;
         f[i] = phi[i];
     }
     lap_.assemble(K, source_);

@@ -17,21 +17,10 @@ Foam::SPH::implicitViscousStep::implicitViscousStep
 :
     walls_(walls),
     nFluid_(nFluid),
-    mu_(V.size(), Zero),
-    Sp_(V.size(), Zero),
-    robinK_(walls.segmentParticles().size(), Zero),
-    robinG_(walls.segmentParticles().size(), Zero),
-    source_(V.size(), Zero),
-    lap_(nbrs, walls, V, nFluid)
-{
-    lap_.coefficient(mu_);
-    lap_.implicitSource(Sp_);
-    labelList& kinds = lap_.kinds();
-    for (label i = nFluid; i < kinds.size(); ++i)
-    {
-        kinds[i] = laplacianMatrix::dirichlet;
-    }
-}
+    nu_(V.size(), Zero),
+    diffusion_(nbrs, walls, V, nFluid),
+    component_(V.size(), Zero)
+{}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -46,27 +35,27 @@ void Foam::SPH::implicitViscousStep::robinData
     // velocity's ((I - n n) u_s)_d
     const List<labelPair>& ends = walls_.segmentParticles();
     const List<vector2D>& normal = walls_.segmentNormals();
-    forAll(robinK_, s)
+    scalarList& k = diffusion_.robinK();
+    scalarList& g = diffusion_.robinG();
+    forAll(k, s)
     {
         const vector2D& n = normal[s];
         const vector2D uS(0.5*(U[ends[s].first()] + U[ends[s].second()]));
-        robinK_[s] = 1 - sqr(n[d]);
-        robinG_[s] = (uS - (uS & n)*n)[d];
+        k[s] = 1 - sqr(n[d]);
+        g[s] = (uS - (uS & n)*n)[d];
     }
 }
 
 
-void Foam::SPH::implicitViscousStep::setSource
+void Foam::SPH::implicitViscousStep::wallCoupling
 (
-    const scalar rhoByDt,
     const scalar dr,
     const UList<vector2D>& U,
     const direction d
 )
 {
-    // L{mu, u}_a,d holds +(mu_s + mu_a)/gamma_a sum_s |grad gamma_as|
-    // n_d n_e u_a,e/max(d_as, dr) (e the other component): at u^n, in the
-    // source S of L{B, u} + Sp u = S
+    // L{nu, u}_a,d holds +(nu_s + nu_a)/gamma_a sum_s |grad gamma_as|
+    // n_d n_e u_a,e/max(d_as, dr) (e the other component)
     const direction e = 1 - d;
     const scalar* gamma = walls_.gamma().cdata();
     const label* wOff = walls_.offsets().cdata();
@@ -75,7 +64,8 @@ void Foam::SPH::implicitViscousStep::setSource
     const scalar* dAs = walls_.distances().cdata();
     const labelPair* ends = walls_.segmentParticles().cdata();
     const vector2D* normal = walls_.segmentNormals().cdata();
-    const scalar* mu = mu_.cdata();
+    const scalar* nu = nu_.cdata();
+    scalar* rate = diffusion_.explicitRate().data();
 
     #pragma omp parallel for schedule(static) if(SPH::worthThreads(nFluid_))
     for (label a = 0; a < nFluid_; ++a)
@@ -85,15 +75,30 @@ void Foam::SPH::implicitViscousStep::setSource
         {
             const label s = seg[k];
             const vector2D& n = normal[s];
-            const scalar muS = 0.5*(mu[ends[s].first()] + mu[ends[s].second()]);
+            const scalar nuS = 0.5*(nu[ends[s].first()] + nu[ends[s].second()]);
             coupling +=
-                (muS + mu[a])*mag(gradGammaAs[k])*n[d]*n[e]/max(dAs[k], dr);
+                (nuS + nu[a])*mag(gradGammaAs[k])*n[d]*n[e]/max(dAs[k], dr);
         }
-        source_[a] = -rhoByDt*U[a][d] - coupling*U[a][e]/gamma[a];
+        rate[a] = coupling*U[a][e]/gamma[a];
     }
-    for (label a = nFluid_; a < source_.size(); ++a)
+}
+
+
+void Foam::SPH::implicitViscousStep::setComponent
+(
+    const scalar rho,
+    const scalar mu,
+    const scalar dr,
+    const UList<vector2D>& U,
+    const direction d
+)
+{
+    nu_ = mu/rho;
+    robinData(U, d);
+    wallCoupling(dr, U, d);
+    forAll(U, i)
     {
-        source_[a] = 0;
+        component_[i] = U[i][d];
     }
 }
 

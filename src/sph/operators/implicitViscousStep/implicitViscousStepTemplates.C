@@ -18,20 +18,8 @@ void Foam::SPH::implicitViscousStep::assemble
     const direction d
 )
 {
-    const scalar rhoByDt = rho/dt;
-    mu_ = mu;
-    Sp_ = -rhoByDt;
-    lap_.robinWalls(robinK_, robinG_, dr);
-    robinData(U, d);
-    setSource(rhoByDt, dr, U, d);
-
-    // The vertex particles keep their wall velocity
-    scalarList& f = lap_.dirichletValues();
-    for (label i = nFluid_; i < f.size(); ++i)
-    {
-        f[i] = U[i][d];
-    }
-    lap_.assemble(K, source_);
+    setComponent(rho, mu, dr, U, d);
+    diffusion_.assemble(K, nu_, dt, dr, component_);
 }
 
 
@@ -50,22 +38,16 @@ Foam::SPH::implicitViscousStep::solve
 )
 {
     FixedList<solverPerformance, 2> perf;
-    const label n = U.size();
-    x_.resize(n);
     for (direction d = 0; d < 2; ++d)
     {
-        assemble(K, rho, mu, dt, dr, U, d);
-        for (label i = 0; i < n; ++i)
-        {
-            x_[i] = U[i][d];
-        }
-        perf[d] = solvers[d]->solve(lap_.matrix(), lap_.source(), x_);
+        setComponent(rho, mu, dr, U, d);
+        perf[d] = diffusion_.solve(K, nu_, dt, dr, *solvers[d], component_);
         for (label i = 0; i < nFluid_; ++i)
         {
-            Ustar[i][d] = x_[i];
+            Ustar[i][d] = component_[i];
         }
     }
-    for (label i = nFluid_; i < n; ++i)
+    for (label i = nFluid_; i < U.size(); ++i)
     {
         Ustar[i] = U[i];
     }
