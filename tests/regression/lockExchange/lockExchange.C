@@ -19,7 +19,10 @@ Description
       gradient broke the symmetry (0.356 against 0.385);
     - the mean front Froude number over 4 L <= X <= 6 L: measured 0.4031,
       -0.7 % off Haertel et al.'s 0.406 (FV at n = 5: 0.361), checked to
-      10 % of 0.406;
+      30 % of 0.406: at n = 5 the window is 10 dr wide and the front's
+      crossings of it move with any change, maxCo 0.18, 0.19, 0.21, 0.22,
+      0.25 giving 0.332, 0.421, 0.518, 0.421, 0.381 (the heavy front's
+      X(10) 6.38, 6.61, 7.14, 6.76, 6.15 L);
     - the heavy front's distance from the lock at t+ = 5 and 10: measured
       3.51 L and 6.85 L (FV at n = 5: 2.41 L and 4.92 L; the SPH current
       leaves the lock faster at every n, see the README), checked to 10 %
@@ -31,6 +34,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "testCase.H"
+#include "particles.H"
 
 #include <cmath>
 #include <fstream>
@@ -48,30 +52,37 @@ namespace
         ss << is.rdbuf();
         return ss.str();
     }
+
+    //- The tutorial without its runs and results, in tests/cases/<name>
+    fileName lockExchangeCopy(const std::string& name)
+    {
+        const fileName dir =
+            fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"heatTransfer"/name;
+        const std::string src =
+            std::string(SPHFOAM_SOURCE_DIR) + "/tutorials/heatTransfer";
+        std::string out;
+        rmDir(dir);
+        mkDir(dir);
+        EXPECT_EQ
+        (
+            sphTest::run
+            (
+                "tar -C " + src + " --exclude=runs --exclude=results"
+                " --exclude='log.*' -cf - lockExchange | tar -C " + dir
+              + " --strip-components=1 -xf -",
+                out
+            ),
+            0
+        ) << out;
+        return dir;
+    }
 }
 
 
 TEST(lockExchangeTutorial, sphFrontFroudeNumberSymmetricAndNearHaertel)
 {
-    // The tutorial without its runs and results
-    const fileName dir =
-        fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"heatTransfer"/"lockExchange";
-    const std::string src =
-        std::string(SPHFOAM_SOURCE_DIR) + "/tutorials/heatTransfer";
+    const fileName dir = lockExchangeCopy("lockExchange");
     std::string out;
-    rmDir(dir);
-    mkDir(dir.path());
-    ASSERT_EQ
-    (
-        sphTest::run
-        (
-            "tar -C " + src + " --exclude=runs --exclude=results --exclude='log.*'"
-            " -cf - lockExchange | tar -C " + dir.path()
-          + " -xf -",
-            out
-        ),
-        0
-    ) << out;
     ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun -test", out), 0) << out;
 
     // The solver's description of its projection
@@ -91,13 +102,105 @@ TEST(lockExchangeTutorial, sphFrontFroudeNumberSymmetricAndNearHaertel)
     const double frHeavy = std::stod(sph[5]), frLight = std::stod(sph[7]);
     const double frRef = 0.406;
     EXPECT_NEAR(frHeavy, frLight, 0.01*frLight) << "front symmetry";
-    EXPECT_NEAR(0.5*(frHeavy + frLight), frRef, 0.1*frRef) << "mean Fr";
+    EXPECT_NEAR(0.5*(frHeavy + frLight), frRef, 0.3*frRef) << "mean Fr";
 
     EXPECT_NEAR(std::stod(sph[9]), 3.51, 0.351) << "heavy front at t+ = 5";
     EXPECT_NEAR(std::stod(sph[10]), 6.85, 0.685) << "heavy front at t+ = 10";
     // FV ran too (the front.dat row is there): its fronts are its own
     // tests' (heatTransferFv)
     EXPECT_GT(std::stod(fv[9]), 0);
+}
+
+
+TEST(lockExchangeTutorial, implicitViscosityKeepsTheFirstStepPointSymmetric)
+{
+    // The set-up is symmetric under the half-turn about the box's centre
+    // (x -> 30 L - x, y -> 2 L - y, T -> Th + Tc - T, u -> -u). The
+    // implicit viscous step took the last pressure's acceleration
+    // g - G{p}/rho for its own, and at the first step from the user's
+    // p = 0 that is g: the end walls' friction damped its tangential part
+    // as if it were a velocity, the same sign at both ends. After that
+    // step |u_a + u_mirror(a)| was 3.9e-4, 0.9 % of the largest speed
+    // (explicit step: 1e-9 of it); without the acceleration at a first
+    // step, 2.7e-10 (6e-9 of it). Checked to 1e-7 of the largest speed.
+    const fileName dir = lockExchangeCopy("lockExchangeImplicit");
+    std::string out;
+    ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun -test -sph", out), 0)
+        << out;
+
+    // The run's initial state (the lock set), one step of 0.1 with
+    // viscousScheme implicit
+    const fileName c = dir/"runs"/"implicit";
+    ASSERT_EQ
+    (
+        sphTest::run
+        (
+            "mkdir -p " + c + " && cp -r " + dir/"runs"/"sph5"/"0" + " "
+          + dir/"runs"/"sph5"/"constant" + " " + dir/"runs"/"sph5"/"system"
+          + " " + c + " && cd " + c + " && sed -i"
+            " -e 's/^viscousScheme .*/viscousScheme implicit;/'"
+            " system/sphSchemes && sed -i"
+            " -e 's/^endTime .*/endTime 0.1;/'"
+            " -e 's/^writeInterval .*/writeInterval 0.1;/'"
+            " system/controlDict && sed -i '/^solvers/,/^{/ s/^{/{\\n"
+            "    U { solver BiCGStab; preconditioner ILU0; tolerance 1e-12;"
+            " relTol 0; }/' system/sphSolution",
+            out
+        ),
+        0
+    ) << out;
+    ASSERT_EQ
+    (
+        sphTest::run
+        (
+            std::string(SPHFOAM_BINARY_DIR) + "/applications/isphFoam -case "
+          + c,
+            out
+        ),
+        0
+    ) << out.substr(out.size() > 3000 ? out.size() - 3000 : 0);
+    ASSERT_NE(out.find("implicit (backward Euler)"), std::string::npos);
+    ASSERT_NE(out.find("Steps 1,"), std::string::npos) << out;
+
+    auto runTime = sphTest::makeTime(c);
+    SPH::particles parts(*runTime, "0.1", SPH::particles::defaultLocal, false);
+    parts.add<vector2D>("U");
+    parts.add<label>("type");
+    parts.read();
+    const List<vector2D>& x = parts.positions();
+    const List<vector2D>& U = parts.field<vector2D>("U");
+    const labelList& type = parts.field<label>("type");
+
+    // The mirror of each fluid particle (its nearest to the turned point)
+    const vector2D centre(15, 1);
+    scalar uMax = 0, asymmetry = 0, worstMatch = 0;
+    label nFluid = 0;
+    forAll(x, a)
+    {
+        if (type[a] != 0) continue;
+        ++nFluid;
+        const vector2D turned(2*centre - x[a]);
+        label m = -1;
+        scalar best = GREAT;
+        forAll(x, b)
+        {
+            if (type[b] == 0 && magSqr(x[b] - turned) < best)
+            {
+                best = magSqr(x[b] - turned);
+                m = b;
+            }
+        }
+        worstMatch = max(worstMatch, std::sqrt(best));
+        uMax = max(uMax, mag(U[a]));
+        asymmetry = max(asymmetry, mag(U[a] + U[m]));
+    }
+    std::cout << "    lock exchange, n = 5, one implicit step: max |u + u_mirror| "
+        << asymmetry << " (" << asymmetry/uMax << " of max |u| " << uMax
+        << "), positions mirrored to " << worstMatch << std::endl;
+    EXPECT_EQ(nFluid, 1341);      // 149 x 9
+    EXPECT_LT(worstMatch, 1e-6);
+    EXPECT_GT(uMax, 1e-2);
+    EXPECT_LT(asymmetry, 1e-7*uMax);
 }
 
 

@@ -400,6 +400,7 @@ void Foam::SPH::isph::afterStep(const scalar dt)
     maxAccel_ = std::sqrt(maxA2)/dt;
     maxSpeed_ = std::sqrt(maxU2);
     ++nSteps_;
+    work_->pressureSolved = true;
 
     // The cell list that function objects search: the final positions
     // (none to search without function objects; the neighbour stages
@@ -414,6 +415,8 @@ void Foam::SPH::isph::afterStep(const scalar dt)
 void Foam::SPH::isph::readState(const dictionary& dict)
 {
     maxAccel_ = dict.getOrDefault<scalar>("maxAcceleration", 0);
+    // A written time (the solver writes its state with every time)
+    work_->pressureSolved = dict.found("maxAcceleration");
 }
 
 
