@@ -13,7 +13,7 @@ Description
 #include <gtest/gtest.h>
 #include "testCase.H"
 #include "restartCheck.H"
-#include "particles.H"
+#include "particleFields.H"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -79,23 +79,12 @@ namespace
     }
 
     //- Particle fields of a time directory
-    struct state
-    {
-        List<vector2D> x, U;
-        scalarList p;
-        labelList type;
-    };
+    using state = sphTest::particleFields;
 
     state readState(const fileName& dir, const word& time)
     {
         auto runTime = sphTest::makeTime(dir);
-        SPH::particles parts(*runTime, time, SPH::particles::defaultLocal, false);
-        parts.add<vector2D>("U");
-        parts.add<scalar>("p");
-        parts.add<label>("type");
-        parts.read();
-        return state{parts.positions(), parts.field<vector2D>("U"),
-            parts.field<scalar>("p"), parts.field<label>("type")};
+        return sphTest::readParticles(*runTime, time);
     }
 
     //- u at x0 by a linear least-squares fit, Wendland-weighted (h = 2 dr),
@@ -507,19 +496,15 @@ TEST(isphFoam, pMinLetsWaterLeaveACeilingInsteadOfHangingFromIt)
     auto meanVAndMinP = [&](scalar& v, scalar& pMin)
     {
         auto runTime = sphTest::makeTime(dir);
-        SPH::particles parts(*runTime, "0.15", SPH::particles::defaultLocal, false);
-        parts.add<vector2D>("U");
-        parts.add<scalar>("p");
-        parts.add<label>("type");
-        parts.read();
+        const state s = sphTest::readParticles(*runTime, "0.15");
         label n = 0;
         v = 0;
         pMin = GREAT;
-        forAll(parts.positions(), i)
+        forAll(s.x, i)
         {
-            if (parts.field<label>("type")[i] != 0) continue;
-            v += parts.field<vector2D>("U")[i].y();
-            pMin = min(pMin, parts.field<scalar>("p")[i]);
+            if (s.type[i] != 0) continue;
+            v += s.U[i].y();
+            pMin = min(pMin, s.p[i]);
             ++n;
         }
         v /= max(n, label(1));

@@ -34,7 +34,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "testCase.H"
-#include "particles.H"
+#include "particleFields.H"
 
 #include <cmath>
 #include <fstream>
@@ -163,13 +163,10 @@ TEST(lockExchangeTutorial, implicitViscosityKeepsTheFirstStepPointSymmetric)
     ASSERT_NE(out.find("Steps 1,"), std::string::npos) << out;
 
     auto runTime = sphTest::makeTime(c);
-    SPH::particles parts(*runTime, "0.1", SPH::particles::defaultLocal, false);
-    parts.add<vector2D>("U");
-    parts.add<label>("type");
-    parts.read();
-    const List<vector2D>& x = parts.positions();
-    const List<vector2D>& U = parts.field<vector2D>("U");
-    const labelList& type = parts.field<label>("type");
+    const sphTest::particleFields s = sphTest::readParticles(*runTime, "0.1");
+    const List<vector2D>& x = s.x;
+    const List<vector2D>& U = s.U;
+    const labelList& type = s.type;
 
     // The mirror of each fluid particle (its nearest to the turned point)
     const vector2D centre(15, 1);

@@ -19,7 +19,7 @@ Description
 #include <gtest/gtest.h>
 #include "testCase.H"
 #include "restartCheck.H"
-#include "particles.H"
+#include "particleFields.H"
 #include "Time.H"
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
@@ -91,13 +91,10 @@ namespace
         auto runTime = sphTest::makeTime(dir);
         const instant last = runTime->times().last();
         t = last.value();
-        SPH::particles parts(*runTime, last.name(), SPH::particles::defaultLocal, false);
-        parts.add<vector2D>("U");
-        parts.add<label>("type");
-        parts.read();
-        const List<vector2D>& x = parts.positions();
-        const List<vector2D>& U = parts.field<vector2D>("U");
-        const labelList& type = parts.field<label>("type");
+        const sphTest::particleFields s = sphTest::readParticles(*runTime, last.name());
+        const List<vector2D>& x = s.x;
+        const List<vector2D>& U = s.U;
+        const labelList& type = s.type;
         DynamicList<scalar> ys, us;
         label nVertices = 0;
         forAll(x, i)

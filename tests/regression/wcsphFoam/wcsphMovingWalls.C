@@ -26,7 +26,7 @@ Description
 #include <gtest/gtest.h>
 #include "testCase.H"
 #include "restartCheck.H"
-#include "particles.H"
+#include "particleFields.H"
 #include "wallMesh.H"
 #include "mathematicalConstants.H"
 
@@ -84,15 +84,12 @@ TEST(wcsphFoamMovingWalls, shakenBoxOfWaterMovesAsOneBody)
         const vector2D d(A*s*diagonal), uW(A*omega*c*diagonal);
         const vector2D a(-A*sqr(omega)*s*diagonal);
 
-        SPH::particles parts(*runTime, t.name(), SPH::particles::defaultLocal, false);
-        parts.add<vector2D>("U");
-        parts.add<scalar>("p");
-        parts.add<label>("type");
-        parts.read();
-        const List<vector2D>& x = parts.positions();
-        const List<vector2D>& U = parts.field<vector2D>("U");
-        const scalarList& p = parts.field<scalar>("p");
-        const labelList& type = parts.field<label>("type");
+        const sphTest::particleFields fields =
+            sphTest::readParticles(*runTime, t.name());
+        const List<vector2D>& x = fields.x;
+        const List<vector2D>& U = fields.U;
+        const scalarList& p = fields.p;
+        const labelList& type = fields.type;
 
         // Fluid particles first, then the wall vertices in wallMesh order
         label nFluid = 0;

@@ -13,7 +13,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "testCase.H"
-#include "particles.H"
+#include "particleFields.H"
 #include "wallMesh.H"
 
 #include <cmath>
@@ -128,15 +128,11 @@ TEST(wcsphFoamUsaw, hydrostaticTankPressureAndRestForTwoSeconds)
     {
         if (t.value() <= 0) continue;
         ++nTimes;
-        SPH::particles parts(*runTime, t.name(), SPH::particles::defaultLocal, false);
-        parts.add<vector2D>("U");
-        parts.add<scalar>("p");
-        parts.add<label>("type");
-        parts.read();
-        const List<vector2D>& x = parts.positions();
-        const List<vector2D>& U = parts.field<vector2D>("U");
-        const scalarList& p = parts.field<scalar>("p");
-        const labelList& type = parts.field<label>("type");
+        const sphTest::particleFields s = sphTest::readParticles(*runTime, t.name());
+        const List<vector2D>& x = s.x;
+        const List<vector2D>& U = s.U;
+        const scalarList& p = s.p;
+        const labelList& type = s.type;
         scalar sumE2 = 0, sumRef2 = 0;
         forAll(x, i)
         {

@@ -16,7 +16,7 @@ Description
 #include <gtest/gtest.h>
 #include "testCase.H"
 #include "restartCheck.H"
-#include "particles.H"
+#include "particleFields.H"
 #include "mathematicalConstants.H"
 
 #include <algorithm>
@@ -44,13 +44,10 @@ namespace
         scalar& L2
     )
     {
-        SPH::particles parts(runTime, t.name(), SPH::particles::defaultLocal, false);
-        parts.add<vector2D>("U");
-        parts.add<label>("type");
-        parts.read();
-        const List<vector2D>& x = parts.positions();
-        const List<vector2D>& U = parts.field<vector2D>("U");
-        const labelList& type = parts.field<label>("type");
+        const sphTest::particleFields s = sphTest::readParticles(runTime, t.name());
+        const List<vector2D>& x = s.x;
+        const List<vector2D>& U = s.U;
+        const labelList& type = s.type;
         const scalar F = std::exp(-8*pi*pi*0.01*t.value());
         scalar sumU2 = 0, sumE2 = 0, sumA2 = 0;
         label nFluid = 0;
