@@ -82,6 +82,36 @@ TEST(particles, binaryRestartIsExactToTheBit)
 }
 
 
+TEST(particles, addIfPresentReadsAWrittenFieldElseFillsAndWritesIt)
+{
+    const fileName dir = sphTest::makeCase("particlesAddIfPresent");
+    auto runTime = sphTest::makeTime(dir);
+    runTime->setTime(0.5, 5);
+    particles written(*runTime, "0.5");
+    fill(written, 100);
+    written.write();
+
+    // A restart of a run that wrote U: read back as it was
+    particles readBack(*runTime, "0.5");
+    readBack.add<scalar>("p");
+    readBack.add<label>("id");
+    readBack.read();
+    EXPECT_TRUE(readBack.addIfPresent<vector2D>("U", vector2D(7, 7)));
+    EXPECT_TRUE(bitwiseEqual(written.field<vector2D>("U"), readBack.field<vector2D>("U")));
+
+    // A field the run did not write: the value everywhere, a restart
+    // field from now on (written at the next write)
+    EXPECT_FALSE(readBack.addIfPresent<scalar>("a", 3.0));
+    ASSERT_EQ(readBack.field<scalar>("a").size(), 100);
+    EXPECT_EQ(readBack.field<scalar>("a")[0], 3.0);
+    EXPECT_EQ(readBack.field<scalar>("a")[99], 3.0);
+    EXPECT_TRUE(readBack.isRestart("a"));
+    runTime->setTime(1, 10);
+    readBack.write();
+    EXPECT_TRUE(isFile(dir/"1"/"lagrangian"/"sph"/"a"));
+}
+
+
 TEST(particles, asciiRestartKeepsWritePrecision)
 {
     const fileName dir = sphTest::makeCase("particlesAscii", "writeFormat ascii; writePrecision 12;");

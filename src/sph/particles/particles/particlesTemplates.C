@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particles.H"
+#include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -46,6 +47,20 @@ Foam::Field<Type>& Foam::SPH::particles::add
         restart_.insert(name);
     }
     return *fld;
+}
+
+
+template<class Type>
+bool Foam::SPH::particles::addIfPresent(const word& name, const Type& value)
+{
+    checkNew(name);
+    if (isFile(io(name, false, false).objectPath()))
+    {
+        readField<Type>(name);
+        return true;
+    }
+    add<Type>(name, value, true);
+    return false;
 }
 
 

@@ -110,8 +110,8 @@ void Foam::SPH::isph::addPrediction(const projection::gradientForm gradient)
     const bool forces = !forces_.empty() || w.gPeriodic != vector2D::zero;
     if (implicitViscosity_)
     {
-        // The forces and the last pressure's acceleration (with R) inside
-        // the implicit step (implicitViscousPrediction.H)
+        // The forces and the last pressure's acceleration inside the
+        // implicit step (implicitViscousPrediction.H)
         if (renormalised) stages_.add(new renormalisation(w));
         if (forces) stages_.add(new bodyForces(w, forces_, true));
         if (thermal_) stages_.add(new buoyancy(w, *thermal_, !forces));
@@ -119,7 +119,7 @@ void Foam::SPH::isph::addPrediction(const projection::gradientForm gradient)
         (
             new implicitViscousPrediction
             (
-                w, solution_, forces || thermal_.valid(), gradient
+                w, solution_, forces || thermal_.valid()
             )
         );
     }
@@ -400,7 +400,6 @@ void Foam::SPH::isph::afterStep(const scalar dt)
     maxAccel_ = std::sqrt(maxA2)/dt;
     maxSpeed_ = std::sqrt(maxU2);
     ++nSteps_;
-    work_->pressureSolved = true;
 
     // The cell list that function objects search: the final positions
     // (none to search without function objects; the neighbour stages
@@ -415,8 +414,6 @@ void Foam::SPH::isph::afterStep(const scalar dt)
 void Foam::SPH::isph::readState(const dictionary& dict)
 {
     maxAccel_ = dict.getOrDefault<scalar>("maxAcceleration", 0);
-    // A written time (the solver writes its state with every time)
-    work_->pressureSolved = dict.found("maxAcceleration");
 }
 
 

@@ -196,6 +196,14 @@ void Foam::SPH::projection::execute(const scalar dt)
     {
         U[i] = w.Ustar[i] + dt*(g - gradP_[i]/rho0);
     }
+    if (w.pressureAcceleration)
+    {
+        vector2DField& a = *w.pressureAcceleration;
+        for (label i = 0; i < nFluid; ++i)
+        {
+            a[i] = g - gradP_[i]/rho0;
+        }
+    }
 }
 
 

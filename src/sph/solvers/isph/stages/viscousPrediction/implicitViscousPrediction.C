@@ -31,16 +31,10 @@ void Foam::SPH::implicitViscousPrediction::setOldValues(const scalar dt)
 {
     isphWork& w = work_;
     const vector2DField& U = w.parts.field<vector2D>("U");
-    projection::pressureGradient(w, gradient_, dtA_);
-    // Without a last pressure (the first step from the user's p), none:
-    // the user's p = 0 under gravity would be dt g, whose tangential part
-    // the walls' friction (17) takes on as if it were a velocity
-    const vector2D g = w.g;
-    const scalar rho0 = w.rho0;
-    const scalar weight = w.pressureSolved ? 1 : 0;
+    const vector2DField& a = *w.pressureAcceleration;
     for (label i = 0; i < w.nFluid; ++i)
     {
-        dtA_[i] = weight*dt*(g - dtA_[i]/rho0);
+        dtA_[i] = dt*a[i];
         uOld_[i] = (afterForces_ ? w.Ustar[i] : U[i]) + dtA_[i];
     }
     for (label i = w.nFluid; i < uOld_.size(); ++i)
@@ -56,16 +50,15 @@ Foam::SPH::implicitViscousPrediction::implicitViscousPrediction
 (
     isphWork& work,
     const dictionary& solution,
-    const bool afterForces,
-    const projection::gradientForm gradient
+    const bool afterForces
 )
 :
     stage
     (
         "viscousPrediction",
         afterForces
-      ? wordList({"U", "p", "R", "Ustar"})
-      : wordList({"U", "p", "R"}),
+      ? wordList({"U", "pressureAcceleration", "Ustar"})
+      : wordList({"U", "pressureAcceleration"}),
         {"Ustar"},
         "viscous prediction"
     ),
@@ -80,12 +73,16 @@ Foam::SPH::implicitViscousPrediction::implicitViscousPrediction
         )
     ),
     afterForces_(afterForces),
-    gradient_(gradient),
     dtA_(work.parts.size()),
     step_(work.nbrs, work.usaw, work.V, work.nFluid),
     uOld_(work.parts.size()),
     nIterations_(0)
-{}
+{
+    // Zero (none) unless a restart reads the last step's
+    work.parts.addIfPresent<vector2D>("pressureAcceleration");
+    work.pressureAcceleration =
+        &work.parts.field<vector2D>("pressureAcceleration");
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -96,8 +93,9 @@ void Foam::SPH::implicitViscousPrediction::describe(Ostream& os) const
     os  << "eqs. (15)-(17), (31), implicit (backward Euler): nu "
         << work_.nu << (work_.nu > 0 ? "" : " (none)") << ", on u^n + dt ("
         << (afterForces_ ? "f + " : "") << "g - G{p^n}/rho), the last"
-        << " pressure's acceleration taken off again (none at a first step"
-        << " from the user's p)" << nl << indent.c_str();
+        << " pressure's acceleration taken off again (the projection's, kept"
+        << " with the particles: pressureAcceleration)" << nl
+        << indent.c_str();
     solverUx_->write(os);
     os  << "; Uy alike";
 }
