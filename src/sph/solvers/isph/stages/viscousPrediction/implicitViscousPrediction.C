@@ -34,8 +34,7 @@ void Foam::SPH::implicitViscousPrediction::setOldValues(const scalar dt)
     const vector2DField& a = *w.pressureAcceleration;
     for (label i = 0; i < w.nFluid; ++i)
     {
-        dtA_[i] = dt*a[i];
-        uOld_[i] = (afterForces_ ? w.Ustar[i] : U[i]) + dtA_[i];
+        uOld_[i] = (afterForces_ ? w.Ustar[i] : U[i]) + dt*a[i];
     }
     for (label i = w.nFluid; i < uOld_.size(); ++i)
     {
@@ -73,7 +72,6 @@ Foam::SPH::implicitViscousPrediction::implicitViscousPrediction
         )
     ),
     afterForces_(afterForces),
-    dtA_(work.parts.size()),
     step_(work.nbrs, work.usaw, work.V, work.nFluid),
     uOld_(work.parts.size()),
     nIterations_(0)
@@ -127,9 +125,10 @@ void Foam::SPH::implicitViscousPrediction::execute(const scalar dt)
     }
 
     // u** = w - dt a^n: the pressure is the projection's
+    const vector2DField& a = *w.pressureAcceleration;
     for (label i = 0; i < w.nFluid; ++i)
     {
-        w.Ustar[i] -= dtA_[i];
+        w.Ustar[i] -= dt*a[i];
     }
 }
 
