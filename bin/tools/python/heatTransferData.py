@@ -235,6 +235,44 @@ def shepard(points, values, samples, radius):
     return out
 
 
+def linear_mls(points, values, samples, radius):
+    """Linear moving least squares (Wendland C2 weights, support radius) of
+    particle values at sample points (m, 2): the value at the sample of the
+    plane f = a + b.(x - sample) fitted with those weights, so exact for a
+    linear field wherever the support is cut, where the Shepard average of
+    a wall's neighbourhood is one-sided and reads a sloped profile off by
+    about the slope times the support's offset. Falls back to the Shepard
+    average where the weighted neighbours do not span a plane (fewer than
+    three, or in a line), nan where no particle is near."""
+    xy = points[:, :2]
+    origin = xy.min(axis=0)
+    keys = np.floor((xy - origin) / radius).astype(int)
+    bins = {}
+    for index, key in enumerate(map(tuple, keys)):
+        bins.setdefault(key, []).append(index)
+    flat = values.reshape(len(values), -1)
+    out = np.full((len(samples), flat.shape[1]), np.nan)
+    for k, sample in enumerate(np.asarray(samples, dtype=float)):
+        ci, cj = np.floor((sample - origin) / radius).astype(int)
+        near = [i for di in (-1, 0, 1) for dj in (-1, 0, 1)
+                for i in bins.get((ci + di, cj + dj), ())]
+        if not near:
+            continue
+        r = xy[near] - sample
+        q = np.linalg.norm(r, axis=1) / radius
+        w = np.where(q < 1, (1 - q) ** 4 * (1 + 4 * q), 0.0)
+        if w.sum() <= 0:
+            continue
+        basis = np.column_stack((np.ones(len(near)), r / radius))
+        moment = basis.T @ (w[:, None] * basis)
+        if (w > 0).sum() >= 3 and np.linalg.cond(moment) < 1e8:
+            coef = np.linalg.solve(moment, basis.T @ (w[:, None] * flat[near]))
+            out[k] = coef[0]
+        else:
+            out[k] = w @ flat[near] / w.sum()
+    return out.reshape((len(samples),) + values.shape[1:])
+
+
 def spacing(points, area):
     """Mean particle spacing of particles filling an area."""
     return math.sqrt(area / max(len(points), 1))
