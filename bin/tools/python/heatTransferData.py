@@ -211,27 +211,36 @@ def sph_time_average(case, result_of, last=0.5):
     return out
 
 
-def shepard(points, values, samples, radius):
-    """Shepard average (Wendland C2 weights, support radius) of particle
-    values at sample points (m, 2); nan where no particle is near. The
-    particles are binned in squares of side radius (numpy only)."""
+def _weighted_neighbours(points, samples, radius):
+    """For each sample point (m, 2) with a particle within radius: its
+    index k, the particles' indices near it, their offsets from it and
+    their Wendland C2 weights (support radius). The particles are binned
+    in squares of side radius (numpy only)."""
     xy = points[:, :2]
     origin = xy.min(axis=0)
     keys = np.floor((xy - origin) / radius).astype(int)
     bins = {}
     for index, key in enumerate(map(tuple, keys)):
         bins.setdefault(key, []).append(index)
-    out = np.full((len(samples),) + values.shape[1:], np.nan)
     for k, sample in enumerate(np.asarray(samples, dtype=float)):
         ci, cj = np.floor((sample - origin) / radius).astype(int)
         near = [i for di in (-1, 0, 1) for dj in (-1, 0, 1)
                 for i in bins.get((ci + di, cj + dj), ())]
         if not near:
             continue
-        q = np.linalg.norm(xy[near] - sample, axis=1) / radius
+        r = xy[near] - sample
+        q = np.linalg.norm(r, axis=1) / radius
         w = np.where(q < 1, (1 - q) ** 4 * (1 + 4 * q), 0.0)
         if w.sum() > 0:
-            out[k] = np.tensordot(w, values[near], axes=1) / w.sum()
+            yield k, near, r, w
+
+
+def shepard(points, values, samples, radius):
+    """Shepard average (Wendland C2 weights, support radius) of particle
+    values at sample points (m, 2); nan where no particle is near."""
+    out = np.full((len(samples),) + values.shape[1:], np.nan)
+    for k, near, _, w in _weighted_neighbours(points, samples, radius):
+        out[k] = np.tensordot(w, values[near], axes=1) / w.sum()
     return out
 
 
@@ -244,25 +253,9 @@ def linear_mls(points, values, samples, radius):
     about the slope times the support's offset. Falls back to the Shepard
     average where the weighted neighbours do not span a plane (fewer than
     three, or in a line), nan where no particle is near."""
-    xy = points[:, :2]
-    origin = xy.min(axis=0)
-    keys = np.floor((xy - origin) / radius).astype(int)
-    bins = {}
-    for index, key in enumerate(map(tuple, keys)):
-        bins.setdefault(key, []).append(index)
     flat = values.reshape(len(values), -1)
     out = np.full((len(samples), flat.shape[1]), np.nan)
-    for k, sample in enumerate(np.asarray(samples, dtype=float)):
-        ci, cj = np.floor((sample - origin) / radius).astype(int)
-        near = [i for di in (-1, 0, 1) for dj in (-1, 0, 1)
-                for i in bins.get((ci + di, cj + dj), ())]
-        if not near:
-            continue
-        r = xy[near] - sample
-        q = np.linalg.norm(r, axis=1) / radius
-        w = np.where(q < 1, (1 - q) ** 4 * (1 + 4 * q), 0.0)
-        if w.sum() <= 0:
-            continue
+    for k, near, r, w in _weighted_neighbours(points, samples, radius):
         basis = np.column_stack((np.ones(len(near)), r / radius))
         moment = basis.T @ (w[:, None] * basis)
         if (w > 0).sum() >= 3 and np.linalg.cond(moment) < 1e8:
