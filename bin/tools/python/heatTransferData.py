@@ -266,6 +266,10 @@ def linear_mls(points, values, samples, radius):
     return out.reshape((len(samples),) + values.shape[1:])
 
 
+# The samplers of particles on lines, by the name compare's -sampling takes
+SAMPLERS = {"mls": linear_mls, "shepard": shepard}
+
+
 def spacing(points, area):
     """Mean particle spacing of particles filling an area."""
     return math.sqrt(area / max(len(points), 1))
