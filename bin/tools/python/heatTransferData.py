@@ -6,13 +6,15 @@ y), the parameters file of a case, the CPU time of a log (ExecutionTime).
 
 SPH side: the particles of the latest (or a given) time of a case's VTK
 series (VTK/<name>.vtp.series and <name>_<index>.vtp, point data T, U,
-p_rgh, as sphFoam writes them), and their Shepard-weighted average on
-points, the way one samples a particle field on a line.
+p_rgh, as sphFoam writes them), their average over the last half of a
+run, and the particles sampled on lines by sphCompare (its set files in
+postProcessing/sphCompare/<time>/).
 """
 import json
 import math
 import os
 import re
+import sys
 import warnings
 
 import numpy as np
@@ -177,8 +179,9 @@ def sph_at_time(case, time=None):
 
 
 def sph_time_average(case, result_of, last=0.5):
-    """The average of result_of(t, points, values) (a dict) over the
-    written times of an SPH case in the last fraction of its run, or None.
+    """The average of result_of(t, points, values) (a dict, or None to
+    leave that time out) over the written times of an SPH case in the last
+    fraction of its run, or None.
     A particle flow at steady state still moves its particles past the
     sampling lines, so one snapshot's profiles and maxima scatter by a few
     per cent at 16^2; their average over the last half does not. Floats
@@ -193,13 +196,15 @@ def sph_time_average(case, result_of, last=0.5):
         return None
     tLast = files[-1][0]
     files = [e for e in files if e[0] >= (1 - last) * tLast]
-    runs = []
+    runs, used = [], []
     for t, path in files:
         points, values = read_particles(path, ("T", "U", "p_rgh"))
         run = result_of(t, points, values)
-        if run is None:
-            return None
-        runs.append(run)
+        if run is not None:
+            runs.append(run)
+            used.append(t)
+    if not runs:
+        return None
     out = dict(runs[-1])
     for key, value in runs[-1].items():
         if isinstance(value, (float, np.floating, np.ndarray)):
@@ -207,67 +212,60 @@ def sph_time_average(case, result_of, last=0.5):
             with warnings.catch_warnings():     # all-nan columns stay nan
                 warnings.simplefilter("ignore", RuntimeWarning)
                 out[key] = np.nanmean(stack, axis=0)
-    out.update(time=tLast, averaged=(len(runs), files[0][0], tLast))
+    out.update(time=used[-1], averaged=(len(runs), used[0], used[-1]))
     return out
 
 
-def _weighted_neighbours(points, samples, radius):
-    """For each sample point (m, 2) with a particle within radius: its
-    index k, the particles' indices near it, their offsets from it and
-    their Wendland C2 weights (support radius). The particles are binned
-    in squares of side radius (numpy only)."""
-    xy = points[:, :2]
-    origin = xy.min(axis=0)
-    keys = np.floor((xy - origin) / radius).astype(int)
-    bins = {}
-    for index, key in enumerate(map(tuple, keys)):
-        bins.setdefault(key, []).append(index)
-    for k, sample in enumerate(np.asarray(samples, dtype=float)):
-        ci, cj = np.floor((sample - origin) / radius).astype(int)
-        near = [i for di in (-1, 0, 1) for dj in (-1, 0, 1)
-                for i in bins.get((ci + di, cj + dj), ())]
-        if not near:
-            continue
-        r = xy[near] - sample
-        q = np.linalg.norm(r, axis=1) / radius
-        w = np.where(q < 1, (1 - q) ** 4 * (1 + 4 * q), 0.0)
-        if w.sum() > 0:
-            yield k, near, r, w
+def sphcompare_folders(case):
+    """[(time, folder)] of postProcessing/sphCompare/<time>/ in a case, in
+    time order (sphCompare -time writes one per selected time)."""
+    base = os.path.join(case, "postProcessing", "sphCompare")
+    out = []
+    for name in os.listdir(base) if os.path.isdir(base) else []:
+        try:
+            out.append((float(name), os.path.join(base, name)))
+        except ValueError:
+            pass
+    return sorted(out)
 
 
-def shepard(points, values, samples, radius):
-    """Shepard average (Wendland C2 weights, support radius) of particle
-    values at sample points (m, 2); nan where no particle is near."""
-    out = np.full((len(samples),) + values.shape[1:], np.nan)
-    for k, near, _, w in _weighted_neighbours(points, samples, radius):
-        out[k] = np.tensordot(w, values[near], axes=1) / w.sum()
-    return out
+def read_sphcompare_set(folder, name):
+    """A set file <name>.dat of sphCompare as {column: array}, 'nan' where a
+    source has no value (columns distance x y weight <component>_<source>)."""
+    columns, rows = None, []
+    with open(os.path.join(folder, name + ".dat")) as f:
+        for line in f:
+            if line.startswith("# distance"):
+                columns = line[1:].split()
+            elif line.strip() and not line.startswith("#"):
+                rows.append([float(v) for v in line.split()])
+    data = np.array(rows, dtype=float).reshape(len(rows), len(columns))
+    return {c: data[:, i] for i, c in enumerate(columns)}
 
 
-def linear_mls(points, values, samples, radius):
-    """Linear moving least squares (Wendland C2 weights, support radius) of
-    particle values at sample points (m, 2): the value at the sample of the
-    plane f = a + b.(x - sample) fitted with those weights, so exact for a
-    linear field wherever the support is cut, where the Shepard average of
-    a wall's neighbourhood is one-sided and reads a sloped profile off by
-    about the slope times the support's offset. Falls back to the Shepard
-    average where the weighted neighbours do not span a plane (fewer than
-    three, or in a line), nan where no particle is near."""
-    flat = values.reshape(len(values), -1)
-    out = np.full((len(samples), flat.shape[1]), np.nan)
-    for k, near, r, w in _weighted_neighbours(points, samples, radius):
-        basis = np.column_stack((np.ones(len(near)), r / radius))
-        moment = basis.T @ (w[:, None] * basis)
-        if (w > 0).sum() >= 3 and np.linalg.cond(moment) < 1e8:
-            coef = np.linalg.solve(moment, basis.T @ (w[:, None] * flat[near]))
-            out[k] = coef[0]
-        else:
-            out[k] = w @ flat[near] / w.sum()
-    return out.reshape((len(samples),) + values.shape[1:])
+def centreline_profiles(case, time, scaleU):
+    """The SPH profiles at one written time from sphCompare's sets
+    'vertical' (x = L/2) and 'horizontal' (y = L/2) of the heated
+    cavities' sph/system/sphCompareDict: (yv, u, Tv, xh, v, Th), the
+    velocities times scaleU; None when sphCompare has no folder at that
+    time."""
+    for t, folder in sphcompare_folders(case):
+        if abs(t - time) <= 1e-6 * max(1.0, abs(time)):
+            vert = read_sphcompare_set(folder, "vertical")
+            horiz = read_sphcompare_set(folder, "horizontal")
+            return (vert["y"], vert["Ux_sph"] * scaleU, vert["T_sph"],
+                    horiz["x"], horiz["Uy_sph"] * scaleU, horiz["T_sph"])
+    return None
 
 
-# The samplers of particles on lines, by the name compare's -sampling takes
-SAMPLERS = {"mls": linear_mls, "shepard": shepard}
+def warn_missing_profiles(case, times):
+    """Say on stderr which written times of an SPH run have no sphCompare
+    output (their profiles left out of the average)."""
+    if times:
+        print("compare: %s: no sphCompare output at t = %s: left out (Allrun"
+              " runs 'sphCompare -time <half>:' after the run; purgeWrite may"
+              " have removed those times' particles)"
+              % (case, ", ".join("%g" % t for t in times)), file=sys.stderr)
 
 
 def spacing(points, area):

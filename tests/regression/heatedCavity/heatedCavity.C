@@ -17,9 +17,10 @@ Description
       measured 1.119 against de Vahl Davis' 1.117 (+0.2 %), checked to
       3 %; u+max 3.562 and v+max 3.593 against 3.649 and 3.697 (-2.4 %,
       -2.8 %), checked to 5 %; T on the centrelines 2.9e-3 off FV 32^2
-      (the profiles are compare's linear moving least squares; the
-      Shepard average used before read 2.6e-2, one-sided by the walls),
-      checked to 1e-2;
+      (the profiles are sphCompare's linear moving least squares over 2
+      dr, sph/system/sphCompareDict, at each of the 11 written times of
+      the last half, checked; the Shepard average used before read
+      2.6e-2, one-sided by the walls), checked to 1e-2;
     - Ra 1e5 (16^2 is 2-3 particles across its boundary layers): mean Nu
       4.85-4.90 against 4.509 (+8 %), checked to 15 %; u+max 31.0
       against 34.73 (-11 %), checked to 20 %; v+max 80.7 against 68.59
@@ -158,6 +159,15 @@ TEST(heatedCavityTutorial, sphNusseltMaximaAndProfilesAgainstDeVahlDavis)
         EXPECT_NEAR(std::stod(s[7]), e.u, e.uTol*e.u) << "u+max, Ra " << e.Ra;
         EXPECT_NEAR(std::stod(s[9]), e.v, e.vTol*e.v) << "v+max, Ra " << e.Ra;
         EXPECT_LT(std::stod(t[14]), e.eT) << "T profiles, Ra " << e.Ra;
+        EXPECT_EQ
+        (
+            readDir
+            (
+                dir/"runs"/("Ra" + e.Ra)/"sph16"/"postProcessing"/"sphCompare",
+                fileName::DIRECTORY
+            ).size(),
+            11
+        ) << "sphCompare at the written times of the last half, Ra " << e.Ra;
 
         const double NuWall = lateNusselt
         (

@@ -272,6 +272,40 @@ TEST(sphCompare, sphSamplingOfALinearFieldAddsNoError)
 }
 
 
+TEST(sphCompare, aSourcesSmoothingLengthAppliesToTheCasesKernel)
+{
+    const fileName dir = linearSphCase("sphCompareSourceHByDr");
+    auto withSource = [](const std::string& entries)
+    {
+        std::string d = linearDict();
+        const std::string plain = "    sph { type sph; }";
+        return d.replace(d.find(plain), plain.size(), "    sph { type sph; " + entries + " }");
+    };
+
+    // hByDr 1 alone: the case's wendlandC2 over 2 dr (it was left out, the
+    // case's hByDr 2 taken instead), still exact for the linear fields
+    sphTest::writeFile(dir/"system"/"sphCompareDict", withSource("interpolationOrder 1; hByDr 1;"));
+    std::string out;
+    ASSERT_EQ(run(sphCompareExe + " -case " + dir + " -time 1", out), 0) << out;
+    EXPECT_NE(out.find("Selecting kernel wendlandC2"), std::string::npos) << out;
+    EXPECT_NE(out.find("hByDr 1, dr 0.05"), std::string::npos) << out;
+    const List<std::string> row = errorRow
+    (
+        dir/"postProcessing"/"sphCompare"/"1"/"errors.dat", "diagonal", "Ux", "sph"
+    );
+    ASSERT_EQ(row.size(), 10) << out;
+    EXPECT_LT(std::stod(row[7]), 1e-10);
+
+    // Out of range: an error naming the source's entry
+    sphTest::writeFile(dir/"system"/"sphCompareDict", withSource("hByDr 0.5;"));
+    EXPECT_EQ(run(sphCompareExe + " -case " + dir + " -time 1", out), 1) << out;
+    for (const std::string w : {"FOAM FATAL IO ERROR", "hByDr", "sphCompareDict.sources.sph"})
+    {
+        EXPECT_NE(out.find(w), std::string::npos) << "'" << w << "' in\n" << out;
+    }
+}
+
+
 TEST(sphCompare, timeRangesCompareAtEachSelectedTime)
 {
     const fileName dir = linearSphCase("sphCompareRanges");

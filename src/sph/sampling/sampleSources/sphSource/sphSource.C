@@ -202,7 +202,18 @@ void Foam::SPH::sphSource::makeInterpolation()
                 false
             )
         );
-        kernel_ = kernel::New(schemes, dr);
+        if (dict_.found("hByDr"))
+        {
+            // The case's kernel at the source's smoothing length (errors
+            // in hByDr name the source's entry)
+            dictionary kernelDict(dict_);
+            kernelDict.add("kernel", schemes.get<word>("kernel"));
+            kernel_ = kernel::New(kernelDict, dr);
+        }
+        else
+        {
+            kernel_ = kernel::New(schemes, dr);
+        }
     }
 
     const label order = dict_.getOrDefault<label>("interpolationOrder", 2);
