@@ -7,7 +7,8 @@ y), the parameters file of a case, the CPU time of a log (ExecutionTime).
 SPH side: the particles of the latest (or a given) time of a case's VTK
 series (VTK/<name>.vtp.series and <name>_<index>.vtp, point data T, U,
 p_rgh, as sphFoam writes them), their average over the last half of a
-run, and the particles sampled on lines by sphCompare (its set files in
+run, their Shepard average on a grid (the lock exchange's contours), and
+the particles sampled on lines by sphCompare (its set files in
 postProcessing/sphCompare/<time>/).
 """
 import json
@@ -213,6 +214,39 @@ def sph_time_average(case, result_of, last=0.5):
                 warnings.simplefilter("ignore", RuntimeWarning)
                 out[key] = np.nanmean(stack, axis=0)
     out.update(time=used[-1], averaged=(len(runs), used[0], used[-1]))
+    return out
+
+
+def _weighted_neighbours(points, samples, radius):
+    """For each sample point (m, 2) with a particle within radius: its
+    index k, the particles' indices near it, their offsets from it and
+    their Wendland C2 weights (support radius). The particles are binned
+    in squares of side radius (numpy only)."""
+    xy = points[:, :2]
+    origin = xy.min(axis=0)
+    keys = np.floor((xy - origin) / radius).astype(int)
+    bins = {}
+    for index, key in enumerate(map(tuple, keys)):
+        bins.setdefault(key, []).append(index)
+    for k, sample in enumerate(np.asarray(samples, dtype=float)):
+        ci, cj = np.floor((sample - origin) / radius).astype(int)
+        near = [i for di in (-1, 0, 1) for dj in (-1, 0, 1)
+                for i in bins.get((ci + di, cj + dj), ())]
+        if not near:
+            continue
+        r = xy[near] - sample
+        q = np.linalg.norm(r, axis=1) / radius
+        w = np.where(q < 1, (1 - q) ** 4 * (1 + 4 * q), 0.0)
+        if w.sum() > 0:
+            yield k, near, r, w
+
+
+def shepard(points, values, samples, radius):
+    """Shepard average (Wendland C2 weights, support radius) of particle
+    values at sample points (m, 2); nan where no particle is near."""
+    out = np.full((len(samples),) + values.shape[1:], np.nan)
+    for k, near, _, w in _weighted_neighbours(points, samples, radius):
+        out[k] = np.tensordot(w, values[near], axes=1) / w.sum()
     return out
 
 
