@@ -83,11 +83,11 @@ TEST(heatedLidCavityTutorial, fvHotWallNusseltNearTheFineMeshValue)
     // lines): the hot bottom's mean Nu measured 7.05-7.27 against FV
     // 32^2's 7.197, checked within 8 % of the fine-mesh 7.508 (without
     // the buoyancy or with the walls' temperatures swapped it is far
-    // off); u/U min on x = 1/2 measured -0.27 (sphCompare's linear moving
-    // least squares over 2 dr, sph/system/sphCompareDict; -0.18 with the
-    // Shepard average used before, one-sided by the walls; the lid drives
-    // the vortex: checked below -0.1); profiles within 0.4 U and 0.4 of
-    // FV 32^2 (measured 0.28 and 0.24;
+    // off); u/U min on x = 1/2 measured -0.18 (sphCompare's quadratic
+    // moving least squares, sph/system/sphCompareDict; -0.26 with a linear
+    // fit over 2 dr, -0.18 with a Shepard average; the lid drives the
+    // vortex: checked below -0.1); profiles within 0.4 U and 0.4 of FV
+    // 32^2 (measured 0.20 and 0.23; a linear fit 0.28 and 0.23;
     // with the Shepard average 0.29-0.31 and 0.26-0.28 in two
     // realisations that differ in the last digits of the pressure solve:
     // 15 particles across a Re = 1000 cavity)
