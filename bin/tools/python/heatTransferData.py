@@ -179,16 +179,17 @@ def sph_at_time(case, time=None):
     return t, points, values
 
 
-def sph_time_average(case, result_of, last=0.5):
+def sph_time_average(case, result_of, last=0.5, fields=("T",)):
     """The average of result_of(t, points, values) (a dict, or None to
     leave that time out) over the written times of an SPH case in the last
-    fraction of its run, or None.
+    fraction of its run, or None; values holds the particle fields named
+    (those the file has).
     A particle flow at steady state still moves its particles past the
     sampling lines, so one snapshot's profiles and maxima scatter by a few
     per cent at 16^2; their average over the last half does not. Floats
     and arrays are averaged (nan-aware); other entries (n, cells: ints)
-    are the latest's; 'time' is the latest time, 'averaged' says over
-    what."""
+    are the latest's; 'time' is the latest time used, 'averaged' says
+    over what."""
     found = sph_series(case)
     if not found:
         return None
@@ -199,7 +200,7 @@ def sph_time_average(case, result_of, last=0.5):
     files = [e for e in files if e[0] >= (1 - last) * tLast]
     runs, used = [], []
     for t, path in files:
-        points, values = read_particles(path, ("T", "U", "p_rgh"))
+        points, values = read_particles(path, fields)
         run = result_of(t, points, values)
         if run is not None:
             runs.append(run)
@@ -277,18 +278,23 @@ def read_sphcompare_set(folder, name):
     return {c: data[:, i] for i, c in enumerate(columns)}
 
 
-def centreline_profiles(case, time, scaleU):
+def centreline_profiles(folders, time, scaleU):
     """The SPH profiles at one written time from sphCompare's sets
     'vertical' (x = L/2) and 'horizontal' (y = L/2) of the heated
-    cavities' sph/system/sphCompareDict: (yv, u, Tv, xh, v, Th), the
-    velocities times scaleU; None when sphCompare has no folder at that
-    time."""
-    for t, folder in sphcompare_folders(case):
+    cavities' sph/system/sphCompareDict, folders being
+    sphcompare_folders(case): (s, u, Tv, v, Th), s the position along
+    either line (the two sets share it), the velocities times scaleU; None
+    when sphCompare has no folder at that time."""
+    for t, folder in folders:
         if abs(t - time) <= 1e-6 * max(1.0, abs(time)):
             vert = read_sphcompare_set(folder, "vertical")
             horiz = read_sphcompare_set(folder, "horizontal")
+            if not np.allclose(vert["y"], horiz["x"]):
+                sys.exit("compare: %s: the sets vertical and horizontal of"
+                         " sphCompareDict must have the same points along"
+                         " their lines" % folder)
             return (vert["y"], vert["Ux_sph"] * scaleU, vert["T_sph"],
-                    horiz["x"], horiz["Uy_sph"] * scaleU, horiz["T_sph"])
+                    horiz["Uy_sph"] * scaleU, horiz["T_sph"])
     return None
 
 
