@@ -538,6 +538,56 @@ TEST(isphFoam, pMinLetsWaterLeaveACeilingInsteadOfHangingFromIt)
 }
 
 
+TEST(isphFoam, maxSpeedStopsAFlowFasterThanTheCaseAllows)
+{
+    // Water falling from a ceiling (the tank upside down, pMin 0) speeds up
+    // at g: with maxSpeed 0.5 m/s the run stops near t = 0.5/g = 0.051 s,
+    // naming the particle, with the last good state written. No other check
+    // fires: the state is smooth, only faster than the case allows
+    const scalar g = 9.81, maxSpeed = 0.5;
+    const fileName dir = tankCase("isphMaxSpeed", "0.05", "0.1");
+    setEntry(dir/"constant"/"g", "value", "(0 9.81 0)");
+    setEntry(dir/"system"/"controlDict", "maxDeltaT", "0.004");
+    std::string out;
+    run("sed -i 's/^ *stopIfNotConverged .*/&\\n    pMin 0;/' "
+        + dir/"system"/"sphSolution", out);
+    ASSERT_EQ(mesh(dir, out), 0) << out;
+
+    // Without a limit the run ends and reports its fastest particle
+    ASSERT_EQ(solve(dir, out), 0) << tail(out);
+    EXPECT_NE(out.find("Largest fluid speed: "), std::string::npos) << tail(out);
+    EXPECT_EQ(out.find("maxSpeed"), std::string::npos) << tail(out);
+
+    run("rm -rf " + dir + "/0.* " + dir + "/VTK && echo 'maxSpeed 0.5;' >> "
+        + dir/"system"/"sphSchemes", out);
+    EXPECT_EQ(solve(dir, out), 1) << tail(out);
+    EXPECT_NE(out.find("a fluid particle faster than maxSpeed 0.5 m/s"),
+        std::string::npos) << tail(out);
+    EXPECT_NE(out.find("more than maxSpeed 0.5 m/s (system/sphSchemes)"),
+        std::string::npos) << tail(out);
+    EXPECT_NE(out.find("particle id "), std::string::npos) << tail(out);
+    const std::string time = lastGoodTime(out);
+    ASSERT_FALSE(time.empty()) << tail(out);
+    EXPECT_GT(std::stod(time), 0.7*maxSpeed/g) << tail(out);
+    EXPECT_LT(std::stod(time), 1.3*maxSpeed/g) << tail(out);
+    const state s = readState(dir, time);
+    ASSERT_GT(s.x.size(), 0);
+    scalar fastest = 0;
+    forAll(s.U, i)
+    {
+        if (s.type[i] == 0) fastest = max(fastest, mag(s.U[i]));
+    }
+    EXPECT_LE(fastest, maxSpeed);
+    EXPECT_GT(fastest, 0.7*maxSpeed);
+
+    // A limit that is not a positive speed is an error naming the entry
+    run("sed -i 's/^maxSpeed .*/maxSpeed -1;/' " + dir/"system"/"sphSchemes", out);
+    EXPECT_EQ(solve(dir, out), 1) << tail(out);
+    EXPECT_NE(out.find("maxSpeed"), std::string::npos) << tail(out);
+    EXPECT_NE(out.find("sphSchemes"), std::string::npos) << tail(out);
+}
+
+
 TEST(isphFoam, restartsFromATimeDirectoryWithALongName)
 {
     // Kills and restarts lengthen the time names (OpenFOAM adds digits

@@ -36,6 +36,7 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     timeStart_(runTime.value()),
     purgeWrite_(timeClock::takeOverPurgeWrite(runTime)),
     displacement_(schemes_),
+    speed_(schemes_),
     maxRetries_
     (
         runTime.controlDict().getOrDefault<label>("retryOnFailure", 0)
@@ -248,9 +249,12 @@ Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
         }
     }
 
-    // A move no valid step makes, then the method's physical bounds
+    // A move no valid step makes, the case's bound on the speed, then the
+    // method's physical bounds
     const label far = displacement_.find(cloud, start_.positions, runTime_, what);
-    return far >= 0 ? far : solver_.findUnphysical(what);
+    if (far >= 0) return far;
+    const label fast = speed_.find(cloud, runTime_, what);
+    return fast >= 0 ? fast : solver_.findUnphysical(what);
 }
 
 
@@ -441,6 +445,7 @@ void Foam::SPH::timeLoop::run()
             ? " (its open sides bound nothing: crossings are logged)" : "")
         << (solver_.crossing() ? " or crossing a wall" : "")
         << ", " << displacement_.describe().c_str()
+        << (speed_.describe().empty() ? "" : ", ") << speed_.describe().c_str()
         << (solver_.physicalChecks().empty() ? "" : ", ")
         << solver_.physicalChecks().c_str()
         << ", deltaT below " << minDeltaTFraction_ << " of the first; "
@@ -513,6 +518,7 @@ void Foam::SPH::timeLoop::run()
     }
 
     displacement_.printSummary(Info);
+    speed_.printSummary(Info);
     openSides_.printSummary(solver_.cloud(), Info);
     if (maxRetries_ > 0)
     {
