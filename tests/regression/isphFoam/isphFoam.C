@@ -55,6 +55,22 @@ namespace
         return dir;
     }
 
+    //- The still tank upside down (g = +9.81 e_y): its floor is a ceiling
+    //- with water under it
+    fileName upsideDownTankCase(const std::string& name, const std::string& endTime)
+    {
+        const fileName dir = tankCase(name, "0.05", endTime);
+        setEntry(dir/"constant"/"g", "value", "(0 9.81 0)");
+        return dir;
+    }
+
+    //- ISPH { pMin 0; } in the case's sphSolution: the liquid holds no tension
+    int setPMinZero(const fileName& dir, std::string& out)
+    {
+        return run("sed -i 's/^ *stopIfNotConverged .*/&\\n    pMin 0;/' "
+            + dir/"system"/"sphSolution", out);
+    }
+
     fileName cavityCase(const std::string& name, const std::string& n, const std::string& endTime)
     {
         const fileName dir = copyCase(here + "/cavity", name);
@@ -487,9 +503,8 @@ TEST(isphFoam, pMinLetsWaterLeaveACeilingInsteadOfHangingFromIt)
     // and falls away from it at about g (measured: mean v 1.32 m/s at
     // 0.15 s, g t = 1.47; hanging: 0, p down to -4413 Pa)
     const scalar g = 9.81, t = 0.15;
-    const fileName dir = tankCase("isphPMin", "0.05", "0.15");
+    const fileName dir = upsideDownTankCase("isphPMin", "0.15");
     setEntry(dir/"system"/"controlDict", "writeInterval", "0.05");
-    setEntry(dir/"constant"/"g", "value", "(0 9.81 0)");
     std::string out;
     ASSERT_EQ(mesh(dir, out), 0) << out;
 
@@ -516,8 +531,8 @@ TEST(isphFoam, pMinLetsWaterLeaveACeilingInsteadOfHangingFromIt)
     EXPECT_LT(mag(v), 0.01*g*t);
     EXPECT_LT(pMin, -4000);
 
-    run("rm -rf " + dir + "/0.* " + dir + "/VTK && sed -i "
-        "'s/^ *stopIfNotConverged .*/&\\n    pMin 0;/' " + dir/"system"/"sphSolution", out);
+    run("rm -rf " + dir + "/0.* " + dir + "/VTK", out);
+    setPMinZero(dir, out);
     ASSERT_EQ(solve(dir, out), 0) << tail(out);
     EXPECT_NE(out.find("no pressure below pMin 0 Pa"), std::string::npos) << tail(out);
     EXPECT_NE(out.find("Particles held at pMin: "), std::string::npos) << tail(out);
@@ -528,8 +543,7 @@ TEST(isphFoam, pMinLetsWaterLeaveACeilingInsteadOfHangingFromIt)
 
     // A confined flow's pressure level is arbitrary: pMin is refused
     const fileName cavity = cavityCase("isphPMinConfined", "10", "0.01");
-    run("sed -i 's/^ *stopIfNotConverged .*/&\\n    pMin 0;/' "
-        + cavity/"system"/"sphSolution", out);
+    setPMinZero(cavity, out);
     ASSERT_EQ(mesh(cavity, out), 0) << out;
     EXPECT_EQ(solve(cavity, out), 1) << tail(out);
     EXPECT_NE(out.find("pMin is for flows with a free surface"), std::string::npos)
@@ -545,12 +559,10 @@ TEST(isphFoam, maxSpeedStopsAFlowFasterThanTheCaseAllows)
     // naming the particle, with the last good state written. No other check
     // fires: the state is smooth, only faster than the case allows
     const scalar g = 9.81, maxSpeed = 0.5;
-    const fileName dir = tankCase("isphMaxSpeed", "0.05", "0.1");
-    setEntry(dir/"constant"/"g", "value", "(0 9.81 0)");
+    const fileName dir = upsideDownTankCase("isphMaxSpeed", "0.1");
     setEntry(dir/"system"/"controlDict", "maxDeltaT", "0.004");
     std::string out;
-    run("sed -i 's/^ *stopIfNotConverged .*/&\\n    pMin 0;/' "
-        + dir/"system"/"sphSolution", out);
+    setPMinZero(dir, out);
     ASSERT_EQ(mesh(dir, out), 0) << out;
 
     // Without a limit the run ends and reports its fastest particle

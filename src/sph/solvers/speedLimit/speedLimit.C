@@ -11,28 +11,26 @@
 
 Foam::SPH::speedLimit::speedLimit(const dictionary& schemes)
 :
-    maxSpeed_(VGREAT),
-    reached_(-1),
-    tReached_(0)
-{
-    if (schemes.found("maxSpeed"))
-    {
-        maxSpeed_ = checkedScalar
+    fluidLimit
+    (
+        schemes.found("maxSpeed")
+      ? checkedScalar
         (
             schemes, "maxSpeed", {0, VGREAT, true},
             "in m/s: the largest speed of a fluid particle"
-        );
-    }
-}
+        )
+      : VGREAT
+    )
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::string Foam::SPH::speedLimit::describe() const
 {
-    if (maxSpeed_ == VGREAT) return string();
+    if (limit_ == VGREAT) return string();
     return
-        "a fluid particle faster than maxSpeed " + Foam::name(maxSpeed_)
+        "a fluid particle faster than maxSpeed " + Foam::name(limit_)
       + " m/s";
 }
 
@@ -40,39 +38,27 @@ Foam::string Foam::SPH::speedLimit::describe() const
 Foam::label Foam::SPH::speedLimit::find
 (
     const sphCloud& cloud,
+    const List<vector2D>& start,
     const Time& runTime,
     string& what
 ) const
 {
     const vector2D* U = cloud.parts().field<vector2D>("U").cdata();
-    label iMax = -1;
-    scalar max2 = -1;
-    for (label i = 0; i < cloud.nFluid(); ++i)
-    {
-        const scalar u2 = magSqr(U[i]);
-        if (u2 > max2)
-        {
-            max2 = u2;
-            iMax = i;
-        }
-    }
+    scalar max2 = 0;
+    const label iMax = largest
+    (
+        cloud.nFluid(), [&](const label i) { return magSqr(U[i]); }, max2
+    );
     if (iMax < 0) return -1;
 
     const scalar speed = std::sqrt(max2);
-    if (speed > maxSpeed_)
-    {
-        what =
-            "Speed " + Foam::name(speed) + " m/s, more than maxSpeed "
-          + Foam::name(maxSpeed_) + " m/s (system/sphSchemes): the flow"
-            " has left what the case models:";
-        return iMax;
-    }
-    if (speed > reached_)
-    {
-        reached_ = speed;
-        tReached_ = runTime.value();
-    }
-    return -1;
+    if (passes(speed, runTime.value())) return -1;
+
+    what =
+        "Speed " + Foam::name(speed) + " m/s, more than maxSpeed "
+      + Foam::name(limit_) + " m/s (system/sphSchemes): the flow"
+        " has left what the case models:";
+    return iMax;
 }
 
 
@@ -81,9 +67,9 @@ void Foam::SPH::speedLimit::printSummary(Ostream& os) const
     if (reached_ < 0) return;
     os  << "Largest fluid speed: " << reached_ << " m/s (t = " << tReached_
         << " s)";
-    if (maxSpeed_ < VGREAT)
+    if (limit_ < VGREAT)
     {
-        os  << ", maxSpeed " << maxSpeed_ << " m/s";
+        os  << ", maxSpeed " << limit_ << " m/s";
     }
     os  << nl;
 }

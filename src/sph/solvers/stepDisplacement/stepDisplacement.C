@@ -12,16 +12,15 @@
 
 Foam::SPH::stepDisplacement::stepDisplacement(const dictionary& schemes)
 :
-    maxByH_(1),
-    reached_(-1),
-    tReached_(0)
-{
-    maxByH_ = checkedScalar
+    fluidLimit
     (
-        schemes, "maxStepDisplacement", maxByH_, {0, VGREAT, true},
-        "in h: the largest move of a particle in one step"
-    );
-}
+        checkedScalar
+        (
+            schemes, "maxStepDisplacement", 1, {0, VGREAT, true},
+            "in h: the largest move of a particle in one step"
+        )
+    )
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -30,7 +29,7 @@ Foam::string Foam::SPH::stepDisplacement::describe() const
 {
     return
         "a fluid particle moving more than maxStepDisplacement "
-      + Foam::name(maxByH_) + " h in a step";
+      + Foam::name(limit_) + " h in a step";
 }
 
 
@@ -44,38 +43,27 @@ Foam::label Foam::SPH::stepDisplacement::find
 {
     const domain& dom = cloud.dom();
     const vector2D* x = cloud.parts().positions().cdata();
-    const scalar h = cloud.W().h();
-    label iMax = -1;
-    scalar max2 = -1;
-    for (label i = 0; i < cloud.nFluid(); ++i)
-    {
-        const scalar d2 = magSqr(dom.separation(x[i], start[i]));
-        if (d2 > max2)
-        {
-            max2 = d2;
-            iMax = i;
-        }
-    }
+    scalar max2 = 0;
+    const label iMax = largest
+    (
+        cloud.nFluid(),
+        [&](const label i) { return magSqr(dom.separation(x[i], start[i])); },
+        max2
+    );
     if (iMax < 0) return -1;
 
+    const scalar h = cloud.W().h();
     const scalar d = std::sqrt(max2);
-    if (d > maxByH_*h)
-    {
-        const scalar dt = runTime.deltaTValue();
-        what =
-            "Moved " + Foam::name(d/h) + " h (" + Foam::name(d) + " m, a mean"
-            " speed of " + Foam::name(d/dt) + " m/s) in one step of "
-          + Foam::name(dt) + " s, more than maxStepDisplacement "
-          + Foam::name(maxByH_) + " h (system/sphSchemes): the step is too"
-            " long for the flow, or the state is blowing up:";
-        return iMax;
-    }
-    if (d/h > reached_)
-    {
-        reached_ = d/h;
-        tReached_ = runTime.value();
-    }
-    return -1;
+    if (passes(d/h, runTime.value())) return -1;
+
+    const scalar dt = runTime.deltaTValue();
+    what =
+        "Moved " + Foam::name(d/h) + " h (" + Foam::name(d) + " m, a mean"
+        " speed of " + Foam::name(d/dt) + " m/s) in one step of "
+      + Foam::name(dt) + " s, more than maxStepDisplacement "
+      + Foam::name(limit_) + " h (system/sphSchemes): the step is too"
+        " long for the flow, or the state is blowing up:";
+    return iMax;
 }
 
 
@@ -83,7 +71,7 @@ void Foam::SPH::stepDisplacement::printSummary(Ostream& os) const
 {
     if (reached_ < 0) return;
     os  << "Largest move in a step: " << reached_ << " h (t = " << tReached_
-        << " s), maxStepDisplacement " << maxByH_ << " h" << nl;
+        << " s), maxStepDisplacement " << limit_ << " h" << nl;
 }
 
 

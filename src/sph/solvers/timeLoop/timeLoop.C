@@ -35,8 +35,7 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     lastDeltaTStart_(-1),
     timeStart_(runTime.value()),
     purgeWrite_(timeClock::takeOverPurgeWrite(runTime)),
-    displacement_(schemes_),
-    speed_(schemes_),
+    limits_(2),
     maxRetries_
     (
         runTime.controlDict().getOrDefault<label>("retryOnFailure", 0)
@@ -49,6 +48,8 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     sortCpuSeconds_(0)
 {
     checkTimeControls(runTime);
+    limits_.set(0, new stepDisplacement(schemes_));
+    limits_.set(1, new speedLimit(schemes_));
     minDeltaTFraction_ = checkedScalar
     (
         schemes_, "minDeltaTFraction", minDeltaTFraction_, {0, 1, false, true},
@@ -251,10 +252,24 @@ Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
 
     // A move no valid step makes, the case's bound on the speed, then the
     // method's physical bounds
-    const label far = displacement_.find(cloud, start_.positions, runTime_, what);
-    if (far >= 0) return far;
-    const label fast = speed_.find(cloud, runTime_, what);
-    return fast >= 0 ? fast : solver_.findUnphysical(what);
+    for (const fluidLimit& limit : limits_)
+    {
+        const label i = limit.find(cloud, start_.positions, runTime_, what);
+        if (i >= 0) return i;
+    }
+    return solver_.findUnphysical(what);
+}
+
+
+Foam::string Foam::SPH::timeLoop::limitsDescription() const
+{
+    string s;
+    for (const fluidLimit& limit : limits_)
+    {
+        const string d(limit.describe());
+        if (!d.empty()) s += ", " + d;
+    }
+    return s;
 }
 
 
@@ -444,8 +459,7 @@ void Foam::SPH::timeLoop::run()
         << " the domain" << (solver_.cloud().dom().anyOpen()
             ? " (its open sides bound nothing: crossings are logged)" : "")
         << (solver_.crossing() ? " or crossing a wall" : "")
-        << ", " << displacement_.describe().c_str()
-        << (speed_.describe().empty() ? "" : ", ") << speed_.describe().c_str()
+        << limitsDescription().c_str()
         << (solver_.physicalChecks().empty() ? "" : ", ")
         << solver_.physicalChecks().c_str()
         << ", deltaT below " << minDeltaTFraction_ << " of the first; "
@@ -517,8 +531,10 @@ void Foam::SPH::timeLoop::run()
         }
     }
 
-    displacement_.printSummary(Info);
-    speed_.printSummary(Info);
+    for (const fluidLimit& limit : limits_)
+    {
+        limit.printSummary(Info);
+    }
     openSides_.printSummary(solver_.cloud(), Info);
     if (maxRetries_ > 0)
     {
