@@ -68,6 +68,39 @@ public:
 };
 
 
+//- A step of a full 0.1 s ending at spikeAt throws particle 0 a metre
+//- (5 h) at 10 m/s; a shorter step (a retry) does not
+class spike
+:
+    public SPH::stage
+{
+    SPH::particles& parts_;
+    const Time& runTime_;
+    const scalar spikeAt_;
+
+public:
+
+    spike(SPH::particles& parts, const Time& runTime, const scalar spikeAt)
+    :
+        stage("spike", {"U"}, {"U", "positions"}),
+        parts_(parts),
+        runTime_(runTime),
+        spikeAt_(spikeAt)
+    {}
+
+    void describe(Ostream& os) const override { os << "a jump at t = " << spikeAt_; }
+
+    void execute(const scalar dt) override
+    {
+        if (std::abs(runTime_.value() - spikeAt_) < 1e-9 && dt > 0.1 - 1e-9)
+        {
+            parts_.positions()[0] += vector2D(1, 0);
+            parts_.field<vector2D>("U")[0] = vector2D(10, 0);
+        }
+    }
+};
+
+
 //- One straight wall below the particles (the cloud needs walls)
 List<List<SPH::wallChain>> floor()
 {
@@ -90,7 +123,7 @@ class passiveScalar
 
 public:
 
-    passiveScalar(Time& runTime, const scalar failAt)
+    passiveScalar(Time& runTime, const scalar failAt, const scalar spikeAt = -1)
     :
         sphSolver(runTime),
         kernel_(SPH::kernel::New(sphTest::dict("kernel wendlandC2; hByDr 2;"), 0.1)),
@@ -125,6 +158,10 @@ public:
             )
         );
         stages_.add(new heat(parts_, runTime, failAt));
+        if (spikeAt > 0)
+        {
+            stages_.add(new spike(parts_, runTime, spikeAt));
+        }
     }
 
     string title() const override { return "passive scalar"; }
@@ -264,6 +301,44 @@ TEST(timeLoop, registeredFieldIsRolledBackWrittenToVTKAndRestarted)
     {
         FAIL() << err.message();
     }
+}
+
+
+TEST(timeLoop, aStepRetriedAfterAFailedCheckDoesNotCountForTheRunsLargest)
+{
+    // The full step to t = 0.5 moves particle 0 by 5 h at 10 m/s: within
+    // maxStepDisplacement 10, beyond maxSpeed 5. Retried with half the
+    // step, it moves 0.0025 h. The run's largest move is that of the
+    // steps it kept (0.005 h each), not the rejected 5 h
+    sphTest::throwOnFatal();
+    const fileName dir = makeCase("timeLoopLimits", "startTime");
+    sphTest::run
+    (
+        "echo 'adjustTimeStep yes; retryOnFailure 1;' >> "
+      + dir/"system"/"controlDict"
+     + " && echo 'maxStepDisplacement 10; maxSpeed 5;' >> "
+      + dir/"system"/"sphSchemes"
+    );
+    testing::internal::CaptureStdout();
+    try
+    {
+        auto runTime = sphTest::makeTime(dir);
+        passiveScalar solver(*runTime, -1, 0.5);
+        SPH::timeLoop(*runTime, solver).run();
+    }
+    catch (const Foam::error& err)
+    {
+        testing::internal::GetCapturedStdout();
+        FAIL() << err.message();
+    }
+    const std::string out = testing::internal::GetCapturedStdout();
+    EXPECT_NE(out.find("1 retries, 1 steps rescued"), std::string::npos) << out;
+    const std::size_t move = out.find("Largest move in a step: ");
+    ASSERT_NE(move, std::string::npos) << out;
+    EXPECT_NEAR(std::stod(out.substr(move + 24)), 0.005, 1e-9) << out;
+    const std::size_t speed = out.find("Largest fluid speed: ");
+    ASSERT_NE(speed, std::string::npos) << out;
+    EXPECT_NEAR(std::stod(out.substr(speed + 21)), 0.01, 1e-12) << out;
 }
 
 

@@ -9,6 +9,8 @@
 Foam::SPH::fluidLimit::fluidLimit(const scalar limit)
 :
     limit_(limit),
+    stepValue_(-1),
+    stepTime_(0),
     reached_(-1),
     tReached_(0)
 {}
@@ -18,16 +20,21 @@ Foam::SPH::fluidLimit::fluidLimit(const scalar limit)
 
 bool Foam::SPH::fluidLimit::passes(const scalar v, const scalar t) const
 {
-    if (v > limit_)
+    stepValue_ = v;
+    stepTime_ = t;
+    return v <= limit_;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::SPH::fluidLimit::accept()
+{
+    if (stepValue_ > reached_)
     {
-        return false;
+        reached_ = stepValue_;
+        tReached_ = stepTime_;
     }
-    if (v > reached_)
-    {
-        reached_ = v;
-        tReached_ = t;
-    }
-    return true;
 }
 
 

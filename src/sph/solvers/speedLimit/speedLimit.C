@@ -49,9 +49,7 @@ Foam::label Foam::SPH::speedLimit::find
     (
         cloud.nFluid(), [&](const label i) { return magSqr(U[i]); }, max2
     );
-    if (iMax < 0) return -1;
-
-    const scalar speed = std::sqrt(max2);
+    const scalar speed = iMax < 0 ? -1 : std::sqrt(max2);
     if (passes(speed, runTime.value())) return -1;
 
     what =

@@ -50,10 +50,8 @@ Foam::label Foam::SPH::stepDisplacement::find
         [&](const label i) { return magSqr(dom.separation(x[i], start[i])); },
         max2
     );
-    if (iMax < 0) return -1;
-
     const scalar h = cloud.W().h();
-    const scalar d = std::sqrt(max2);
+    const scalar d = iMax < 0 ? -1 : std::sqrt(max2);
     if (passes(d/h, runTime.value())) return -1;
 
     const scalar dt = runTime.deltaTValue();

@@ -5,6 +5,8 @@
 #include "timeLoop.H"
 #include "timeClock.H"
 #include "checkedEntry.H"
+#include "stepDisplacement.H"
+#include "speedLimit.H"
 #include "atomicTimeDirectory.H"
 #include "wallCrossing.H"
 #include "IOdictionary.H"
@@ -414,6 +416,10 @@ void Foam::SPH::timeLoop::step()
     if (!ok)
     {
         fail(what, bad, true);
+    }
+    for (fluidLimit& limit : limits_)
+    {
+        limit.accept();
     }
     solver_.afterStep(runTime_.deltaTValue());
     openSides_.check(solver_.cloud(), start_.positions, runTime_);
