@@ -79,6 +79,24 @@ def particle_count(case):
     return 0
 
 
+def run_times(rows):
+    """(cpu, wall, runs, untimed): the solver seconds of the runs behind
+    rows, each run once. A run gives one row per error measure and
+    reference, so the rows of one run are those with the same case, method,
+    resolution, particles and times (a case of several Rayleigh numbers has
+    one run per number at each resolution: their times differ). runs counts
+    the runs, untimed those with no CPU time (NaN), which the sums leave out."""
+    runs = {}
+    for r in rows:
+        key = (r["case"], r["method"], r["resolution"], r["particles"],
+               _format(number(r["cpuSeconds"])), _format(number(r["wallSeconds"])))
+        runs[key] = (number(r["cpuSeconds"]), number(r["wallSeconds"]))
+    cpu = sum(c for c, _ in runs.values() if math.isfinite(c))
+    wall = sum(w for c, w in runs.values() if math.isfinite(c) and math.isfinite(w))
+    untimed = sum(1 for c, _ in runs.values() if not math.isfinite(c))
+    return cpu, wall, len(runs), untimed
+
+
 def _format(value):
     if isinstance(value, float):
         return "nan" if math.isnan(value) else "%.6g" % value

@@ -6,6 +6,7 @@ import html
 import os
 import re
 
+import errorTable
 import reportFigures
 
 PROJECT = ["."]     # the project folder: the page names folders relative to it
@@ -77,6 +78,20 @@ def runs_rows(sections):
             for s in sections for r in s.runs]
 
 
+def cost_sentence(rows, what):
+    """What the runs behind rows cost: their solvers' own seconds, read from
+    the errors.csv rows (the report may have reused them, so its own time
+    says nothing of theirs)."""
+    cpu, wall, runs, untimed = errorTable.run_times(rows)
+    if not runs:
+        return ""
+    text = "%s %d run%s: %.0f s of solver CPU (%.1f h), %.0f s of wall clock" % (
+        what, runs, "" if runs == 1 else "s", cpu, cpu/3600, wall)
+    if untimed:
+        text += "; %d without a CPU time, not counted" % untimed
+    return text + "."
+
+
 def references(section):
     return sorted({r["reference"] for r in section.rows})
 
@@ -88,6 +103,7 @@ def section_html(s):
                                      e(r["action"]), e(r["seconds"]), e(r["cpuSeconds"]))
         for r in s.runs))
     if s.rows:
+        out.append("<p>%s</p>" % e(cost_sentence(s.rows, "The rows below come from")))
         out.append("<p><b>Reference:</b> %s<br><b>Error measures:</b> %s</p>" % (
             "; ".join(e(x) for x in references(s)),
             "; ".join(e(m) for m in reportFiguresMeasures(s))))
@@ -136,6 +152,8 @@ def write_html(a, sections, stabilityRows, benchmarks):
            + '<li><a href="#stability">stability map</a></li>'
            '<li><a href="#benchmarks">speed benchmarks</a></li></ul></nav>',
            "<h2>Runs</h2>",
+           "<p>%s</p>" % e(cost_sentence([r for s in sections for r in s.rows],
+                                         "The page shows")),
            html_table(("case", "action", "wall s", "CPU s", "folder", "command"),
                       runs_rows(sections), numeric=(2, 3)),
            '<p>All rows in one table: <a href="errors.csv">errors.csv</a>; methods: FV '
@@ -168,12 +186,14 @@ def md_table(header, rows):
 def write_markdown(a, sections, stabilityMd, benchmarks):
     now = datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC")
     out = ["# %s" % a.title, "", "Written %s by ./Allreport. %s" % (now, a.note), "",
-           "## Runs", "", md_table(("case", "action", "wall s", "CPU s", "folder", "command"),
+           "## Runs", "", cost_sentence([r for s in sections for r in s.rows], "The page shows"),
+           "", md_table(("case", "action", "wall s", "CPU s", "folder", "command"),
                                    runs_rows(sections))]
     for s in sections:
         out += ["## %s" % s.case, ""]
         if s.rows:
-            out += ["Reference: %s  " % "; ".join(references(s)),
+            out += [cost_sentence(s.rows, "The rows below come from"), "",
+                    "Reference: %s  " % "; ".join(references(s)),
                     "Error measures: %s" % "; ".join(reportFiguresMeasures(s)), "",
                     "![%s: error against run time](%s)" % (s.case, s.png), "",
                     "Observed orders (error ~ h^p, error ~ CPU^-s):", "",

@@ -19,7 +19,8 @@ Description
     31 minutes.
     A second test: errors.csv files with a wrong header, a value that is
     not a number and a short row are each refused naming the file, the
-    line and what is wrong (1 s).
+    line and what is wrong (1 s). A third: the page sums the solver seconds
+    of the runs it shows, each run once, from their errors.csv rows.
 
 \*---------------------------------------------------------------------------*/
 
@@ -168,4 +169,53 @@ TEST(allreport, aBadErrorsCsvNamesTheFileLineAndEntry)
     EXPECT_NE(sphTest::run(read + dir/"fields"/"errors.csv" + " 2>&1", out), 0);
     EXPECT_NE(out.find("errors.csv: line 2: 6 fields, expected 9"), std::string::npos)
         << out;
+}
+
+
+TEST(allreport, thePageSaysWhatTheRunsItShowsCost)
+{
+    // The full form reuses finished runs, so its own time says nothing of
+    // theirs: the page sums the solvers' seconds from the errors.csv rows,
+    // each run once (one row per measure; two Rayleigh numbers at one
+    // resolution are two runs, told apart by their times)
+    const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"allreportCost";
+    rmDir(dir);
+    const std::string header =
+        "case,method,resolution,particles,measure,value,reference,wallSeconds,cpuSeconds\n";
+    sphTest::writeFile
+    (
+        dir/"a"/"results"/"errors.csv",
+        header
+      + "cavity,FV,16,256,L2 u,0.01,Ghia,2,1.5\n"
+        "cavity,FV,16,256,L2 v,0.02,Ghia,2,1.5\n"
+        "cavity,ISPH-USAW,16,225,L2 u,0.03,Ghia,120,100\n"
+        "cavity,ISPH-USAW,16,225,L2 u Re 400,0.04,Ghia,70,60\n"
+        "cavity,WCSPH,16,225,L2 u,0.05,Ghia,nan,nan\n"
+    );
+    sphTest::writeFile
+    (
+        dir/"runs.tsv",
+        "#case\tfolder\taction\tseconds\tcpuSeconds\tcommand\tlog\n"
+        "cavity\t" + dir/"a" + "\treused\t0\t0\t-\t-\n"
+    );
+    std::string out;
+    ASSERT_EQ
+    (
+        sphTest::run
+        (
+            std::string(SPHFOAM_PYTHON) + " " + SPHFOAM_SOURCE_DIR
+          + "/bin/tools/python/sphReport.py -out " + dir/"out" + " -runs " + dir/"runs.tsv"
+          + " -project " + SPHFOAM_SOURCE_DIR + " 2>&1",
+            out
+        ),
+        0
+    ) << out;
+    const std::string md = readAll(dir/"out"/"summary.md");
+    const std::string cost =
+        "4 runs: 162 s of solver CPU (0.0 h), 192 s of wall clock; "
+        "1 without a CPU time, not counted.";
+    EXPECT_NE(md.find("The page shows " + cost), std::string::npos) << md;
+    EXPECT_NE(md.find("The rows below come from " + cost), std::string::npos) << md;
+    EXPECT_NE(readAll(dir/"out"/"index.html").find("The page shows " + cost),
+        std::string::npos);
 }
