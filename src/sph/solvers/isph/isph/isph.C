@@ -184,6 +184,7 @@ void Foam::SPH::isph::addStages()
     stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (30)"));
     if (moving) stages_.add(new moveWalls(w, runTime_, false));
     ghostCondition(renormalised);
+    readInteriorCompaction();
     stages_.add(new usawNeighbours(w, ""));
     if (!turbulence_->isLaminar())
     {

@@ -126,6 +126,16 @@ void Foam::SPH::isph::ghostCondition(const bool renormalised)
 }
 
 
+void Foam::SPH::isph::readInteriorCompaction()
+{
+    work_->interiorCompaction = checkedScalar
+    (
+        schemes_, "interiorCompaction", scalar(0), {0, 10},
+        "alpha of the interior rows' density source"
+    );
+}
+
+
 void Foam::SPH::isph::buildCloud()
 {
     const fluidProperties fluid(runTime_);
