@@ -27,24 +27,20 @@ namespace
     //- The still tank at dr = 0.05 (H = 0.5 m) to endTime, meshed
     fileName meshedTank(const std::string& name, const std::string& endTime)
     {
-        const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/name;
-        rmDir(dir);
-        mkDir(dir.path());
+        const fileName dir = sphTest::copyTutorial("isph/hydrostaticTank", name);
         std::string out;
         EXPECT_EQ
         (
             run
             (
-                "cp -r " + std::string(SPHFOAM_SOURCE_DIR)
-              + "/tutorials/isph/hydrostaticTank " + dir
-              + " && sed -i 's/^dr .*/dr 0.05;/' " + dir + "/system/sphMeshDict"
+                "sed -i 's/^dr .*/dr 0.05;/' " + dir/"system"/"sphMeshDict"
               + " && sed -i 's/^endTime .*/endTime " + endTime + ";/' "
-              + dir + "/system/controlDict",
+              + dir/"system"/"controlDict"
+              + " && " + bin + "sphMesh -case " + dir,
                 out
             ),
             0
         ) << out;
-        EXPECT_EQ(run(bin + "sphMesh -case " + dir, out), 0) << out;
         return dir;
     }
 
