@@ -166,6 +166,7 @@ void Foam::SPH::pressurePoisson::interiorRows(const Kernel& K, const scalar dt)
     // is water (a free-surface neighbour leaves the sum short by the air's
     // side, not by dilution)
     isphWork& w = work_;
+    if (w.nFluid == 0) return;
     const label* off = w.nbrs.offsets().cdata();
     const label* nbr = w.nbrs.indices().cdata();
     const scalar* r = w.nbrs.r().cdata();
