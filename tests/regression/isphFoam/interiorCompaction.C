@@ -6,7 +6,8 @@ Description
     its water spread 3 % each way (the room a shift makes, which the
     divergence-free projection does not see) keeps that room without it
     and gives it back with it; the same tank unspread gets no source at
-    all; a negative alpha names the entry.
+    all; a negative alpha names the entry. The time loop's spreadLimit
+    reports the kept room, and stops the run when maxSpread is below it.
 
 \*---------------------------------------------------------------------------*/
 
@@ -84,6 +85,15 @@ namespace
     {
         return s.size() > 3000 ? s.substr(s.size() - 3000) : s;
     }
+
+    //- The run's largest spread (SPH::spreadLimit's line at the end), or
+    //- -2 without the line
+    scalar largestSpread(const std::string& out)
+    {
+        const std::string key = "Largest spread of the fluid: ";
+        const std::size_t at = out.find(key);
+        return at == std::string::npos ? -2 : std::stod(out.substr(at + key.size()));
+    }
 }
 
 
@@ -100,6 +110,9 @@ TEST(isphFoamInteriorCompaction, givesBackTheRoomASpreadTankTookAndLeavesStillWa
     ASSERT_EQ(run(bin + "isphFoam -case " + kept, out), 0) << tail(out);
     EXPECT_EQ(out.find("Diluted interior particles"), std::string::npos) << tail(out);
     const scalar topKept = top(kept, "1");
+    // The time loop's spreadLimit sees the room kept: 1.03^2 - 1
+    const scalar spreadKept = largestSpread(out);
+    EXPECT_NEAR(spreadKept, 0.0609, 0.005) << tail(out);
 
     const fileName pulled = meshedTank("isphSpreadPulled", "1");
     spread(pulled, 1.03, 0.5);
@@ -114,7 +127,8 @@ TEST(isphFoamInteriorCompaction, givesBackTheRoomASpreadTankTookAndLeavesStillWa
         std::string::npos) << tail(out);
     const scalar topPulled = top(pulled, "1");
     std::cout << "    top row after 1 s: " << topKept << " m without, " << topPulled
-        << " m with interiorCompaction 0.1 (spread to 0.515, lattice 0.5)" << std::endl;
+        << " m with interiorCompaction 0.1 (spread to 0.515, lattice 0.5); largest"
+        << " spread " << spreadKept << " without" << std::endl;
     EXPECT_GT(topKept, 0.514);
     EXPECT_LT(topPulled, 0.511);
     EXPECT_GT(topPulled, 0.5);
@@ -130,6 +144,26 @@ TEST(isphFoamInteriorCompaction, givesBackTheRoomASpreadTankTookAndLeavesStillWa
     EXPECT_NE(run(bin + "isphFoam -case " + still, out), 0);
     EXPECT_NE(out.find("interiorCompaction"), std::string::npos) << tail(out);
     EXPECT_NE(out.find("sphSchemes"), std::string::npos) << tail(out);
+}
+
+
+TEST(isphFoamInteriorCompaction, aSpreadBeyondMaxSpreadStopsTheRunLoudly)
+{
+    // The same spread tank under maxSpread 0.03: its 6 % stops the first
+    // step, with the entry, the figures and the least filled particle; the
+    // start is the last good state
+    const fileName dir = meshedTank("isphSpreadStops", "1");
+    spread(dir, 1.03, 0.5);
+    std::string out;
+    ASSERT_EQ(run("echo 'maxSpread 0.03;' >> " + dir/"system"/"sphSchemes", out), 0);
+    EXPECT_EQ(run(bin + "isphFoam -case " + dir, out), 1) << tail(out);
+    EXPECT_NE(out.find("the fluid spreading more than maxSpread 0.03 beyond"),
+        std::string::npos) << out.substr(0, 6000);
+    EXPECT_NE(out.find("more than maxSpread 0.03 (system/sphSchemes): the particles drift"
+        " apart, the shifting most often; least filled: particle id "),
+        std::string::npos) << tail(out);
+    EXPECT_NE(out.find("The last good state, time 0, is written"), std::string::npos)
+        << tail(out);
 }
 
 

@@ -222,6 +222,11 @@ TEST(wcsphBounds, stillTankTripsNoCheckAndReportsItsExtremes)
     EXPECT_NE(out.find("densityBounds (0.8 1.25), max|U|/c0 above maxMach 0.3"), std::string::npos) << out;
     EXPECT_NE(out.find("Bounds reached: rho/rho0 from "), std::string::npos) << out;
     EXPECT_NE(out.find("Largest move in a step: "), std::string::npos) << out;
+    // The water keeps its room: a spread within 1 % (SPH::spreadLimit)
+    const std::string key = "Largest spread of the fluid: ";
+    const std::size_t at = out.find(key);
+    ASSERT_NE(at, std::string::npos) << out;
+    EXPECT_LT(std::abs(std::stod(out.substr(at + key.size()))), 0.01) << out;
 }
 
 
@@ -235,6 +240,7 @@ TEST(wcsphBounds, badEntriesNameTheFileAndEntry)
         {"maxMach 0;", "maxMach"},
         {"onMachExceeded sometimes;", "warn"},
         {"maxStepDisplacement 0;", "maxStepDisplacement"},
+        {"maxSpread -1;", "maxSpread"},
     };
     for (const auto& c : cases)
     {

@@ -7,6 +7,7 @@
 #include "checkedEntry.H"
 #include "stepDisplacement.H"
 #include "speedLimit.H"
+#include "spreadLimit.H"
 #include "atomicTimeDirectory.H"
 #include "wallCrossing.H"
 #include "IOdictionary.H"
@@ -37,7 +38,7 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     lastDeltaTStart_(-1),
     timeStart_(runTime.value()),
     purgeWrite_(timeClock::takeOverPurgeWrite(runTime)),
-    limits_(2),
+    limits_(3),
     maxRetries_
     (
         runTime.controlDict().getOrDefault<label>("retryOnFailure", 0)
@@ -52,6 +53,7 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     checkTimeControls(runTime);
     limits_.set(0, new stepDisplacement(schemes_));
     limits_.set(1, new speedLimit(schemes_));
+    limits_.set(2, new spreadLimit(schemes_));
     minDeltaTFraction_ = checkedScalar
     (
         schemes_, "minDeltaTFraction", minDeltaTFraction_, {0, 1, false, true},
@@ -252,8 +254,8 @@ Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
         }
     }
 
-    // A move no valid step makes, the case's bound on the speed, then the
-    // method's physical bounds
+    // A move no valid step makes, the case's bound on the speed, the fluid
+    // spreading, then the method's physical bounds
     for (const fluidLimit& limit : limits_)
     {
         const label i = limit.find(cloud, start_.positions, runTime_, what);

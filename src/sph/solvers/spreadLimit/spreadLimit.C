@@ -1,0 +1,180 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "spreadLimit.H"
+#include "checkedEntry.H"
+#include "kernelDispatch.H"
+#include "openMPThreshold.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Kernel>
+Foam::scalar Foam::SPH::spreadLimit::fill
+(
+    const sphCloud& cloud,
+    const Kernel& K,
+    const scalar full,
+    const label a
+)
+{
+    const label nFluid = cloud.nFluid();
+    scalar sum = 0;
+    vector2D moment(0, 0);
+    bool byWall = false;
+    cloud.cells().forEachNeighbour
+    (
+        cloud.parts().positions()[a],
+        K.support(),
+        [&](const label b, const vector2D& rab, const scalar r2)
+        {
+            byWall = byWall || b >= nFluid;
+            const scalar w = K.W(std::sqrt(r2));
+            sum += w;
+            moment += w*rab;
+        }
+    );
+    // A surface within the kernel tilts its first moment (a lattice's is 0)
+    if (byWall || mag(moment) > 0.02*K.h()*sum) return -1;
+    return sqr(cloud.dr())*sum/full;
+}
+
+
+Foam::scalar Foam::SPH::spreadLimit::meanFill
+(
+    const sphCloud& cloud,
+    label& nWhole
+)
+{
+    const label nFluid = cloud.nFluid();
+    const scalar full = latticeSum(cloud.W());
+    scalar total = 0;
+    label n = 0;
+    dispatch(cloud.W(), [&](const auto& K)
+    {
+        #pragma omp parallel for schedule(static) reduction(+:total, n) \
+            if(SPH::worthThreads(nFluid))
+        for (label a = 0; a < nFluid; ++a)
+        {
+            const scalar f = fill(cloud, K, full, a);
+            if (f >= 0)
+            {
+                total += f;
+                ++n;
+            }
+        }
+    });
+    nWhole = n;
+    return n > 0 ? total/n : -1;
+}
+
+
+Foam::label Foam::SPH::spreadLimit::leastFilled(const sphCloud& cloud)
+{
+    const scalar full = latticeSum(cloud.W());
+    label aLeast = -1;
+    scalar least = VGREAT;
+    dispatch(cloud.W(), [&](const auto& K)
+    {
+        for (label a = 0; a < cloud.nFluid(); ++a)
+        {
+            const scalar f = fill(cloud, K, full, a);
+            if (f >= 0 && f < least)
+            {
+                least = f;
+                aLeast = a;
+            }
+        }
+    });
+    return aLeast;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::SPH::spreadLimit::spreadLimit(const dictionary& schemes)
+:
+    fluidLimit
+    (
+        checkedScalar
+        (
+            schemes, "maxSpread", 0.25, {0, VGREAT, true},
+            "the largest fraction of room the fluid may take beyond its"
+            " particles' volumes (1/mean kernel sum - 1)"
+        )
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::SPH::spreadLimit::latticeSum(const kernel& K)
+{
+    const scalar dr = K.dr();
+    const label m = label(K.support()/dr) + 1;
+    scalar sum = 0;
+    for (label i = -m; i <= m; ++i)
+    {
+        for (label j = -m; j <= m; ++j)
+        {
+            sum += K.W(dr*std::hypot(scalar(i), scalar(j)));
+        }
+    }
+    return sqr(dr)*sum;
+}
+
+
+Foam::scalar Foam::SPH::spreadLimit::spread
+(
+    const sphCloud& cloud,
+    label& nWhole
+)
+{
+    const scalar mean = meanFill(cloud, nWhole);
+    return nWhole < 10 ? -1 : 1/mean - 1;
+}
+
+
+Foam::string Foam::SPH::spreadLimit::describe() const
+{
+    return
+        "the fluid spreading more than maxSpread " + Foam::name(limit_)
+      + " beyond its particles' volumes";
+}
+
+
+Foam::label Foam::SPH::spreadLimit::find
+(
+    const sphCloud& cloud,
+    const List<vector2D>& start,
+    const Time& runTime,
+    string& what
+) const
+{
+    label nWhole = 0;
+    const scalar s = spread(cloud, nWhole);
+    if (passes(s, runTime.value())) return -1;
+
+    what =
+        "The fluid takes " + Foam::name(1 + s) + " times the room its"
+        " particles' volumes fill (mean kernel sum of " + Foam::name(nWhole)
+      + " whole kernels " + Foam::name(1/(1 + s)) + " of the lattice's),"
+        " a spread of " + Foam::name(s) + ", more than maxSpread "
+      + Foam::name(limit_) + " (system/sphSchemes): the particles drift"
+        " apart, the shifting most often; least filled:";
+    return leastFilled(cloud);
+}
+
+
+void Foam::SPH::spreadLimit::printSummary(Ostream& os) const
+{
+    if (reached_ < 0) return;
+    os  << "Largest spread of the fluid: " << reached_ << " (t = "
+        << tReached_ << " s; 1/mean kernel sum of whole kernels - 1),"
+        << " maxSpread " << limit_ << nl;
+}
+
+
+// ************************************************************************* //

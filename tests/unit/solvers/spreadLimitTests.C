@@ -1,0 +1,120 @@
+/*---------------------------------------------------------------------------*\
+  sphFoam: 2-D SPH on OpenFOAM v1912.  GPL-3.0-or-later.
+-------------------------------------------------------------------------------
+Description
+    SPH::spreadLimit, the time loop's check of the room the fluid takes, on
+    the function objects' test tank (a 50 x 25 lattice block at dr = 0.02
+    beside dummy walls):
+    - the block on its lattice has spread 0 (its whole kernels sum what the
+      lattice does), for the Wendland and the cubic spline kernels;
+    - the block spread 10 % each way takes 1.1^2 = 1.21 times the room;
+      the check passes it under maxSpread 0.25 and stops it under 0.2,
+      naming the entry, the spread and the least filled particle;
+    - the kernels the walls' dummies reach and those the surface or the
+      block's side cuts do not count; fewer than ten whole kernels (a thin
+      layer) are not checked.
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "../functionObjects/functionObjectTestTools.H"
+#include "spreadLimit.H"
+
+using namespace Foam;
+
+namespace
+{
+    //- Spread the block's particles by factor about (0.5, 0) and rebuild
+    //- the cell list
+    void spreadBlock(sphTest::sphTank& tank, const scalar factor)
+    {
+        vector2DField& x = tank.parts->positions();
+        for (label i = 0; i < tank.nFluid; ++i)
+        {
+            x[i] = vector2D(0.5 + factor*(x[i].x() - 0.5), factor*x[i].y());
+        }
+        tank.cloud->updateCells();
+    }
+
+    scalar spreadOf(const sphTest::sphTank& tank, label& nWhole)
+    {
+        return SPH::spreadLimit::spread(*tank.cloud, nWhole);
+    }
+}
+
+
+TEST(spreadLimit, latticeBlockHasNoSpread)
+{
+    for (const std::string k : {"kernel wendlandC2;", "kernel cubicSpline;"})
+    {
+        sphTest::tankSpec spec;
+        spec.kernel = k;
+        sphTest::sphTank tank("spreadLattice", spec);
+        label nWhole = 0;
+        // The kernels the surface just reaches count (their first moment
+        // is below 2 %): they lack a few parts in 1e4
+        EXPECT_NEAR(spreadOf(tank, nWhole), 0, 1e-3) << k;
+        // Those reaching the dummies, and most within 2h of the surface
+        // or the block's right side, do not: 900 of 1250 (Wendland)
+        EXPECT_GT(nWhole, 600) << k;
+        EXPECT_LT(nWhole, 1100) << k;
+    }
+}
+
+
+TEST(spreadLimit, spreadBlockTakesTheRoomItsSpacingSays)
+{
+    sphTest::sphTank tank("spreadTenPercent");
+    spreadBlock(tank, 1.1);
+    label nWhole = 0;
+    const scalar s = spreadOf(tank, nWhole);
+    // 1.21 - 1 for a continuous kernel sum; h = 2 dr over a spacing of
+    // 1.1 dr still sums it within a few parts in 1e4
+    EXPECT_NEAR(s, 0.21, 0.002);
+    EXPECT_GT(nWhole, 300);
+
+    string what;
+    const SPH::spreadLimit loose(sphTest::dict("maxSpread 0.25;"));
+    EXPECT_EQ(loose.find(*tank.cloud, tank.parts->positions(), *tank.runTime, what), -1);
+
+    const SPH::spreadLimit tight(sphTest::dict("maxSpread 0.2;"));
+    const label i = tight.find(*tank.cloud, tank.parts->positions(), *tank.runTime, what);
+    EXPECT_GE(i, 0);
+    EXPECT_LT(i, tank.nFluid);
+    EXPECT_NE(what.find("more than maxSpread 0.2 (system/sphSchemes)"), std::string::npos) << what;
+    EXPECT_NE(what.find("a spread of 0.209"), std::string::npos) << what;
+}
+
+
+TEST(spreadLimit, thinLayerIsNotChecked)
+{
+    // Three rows: every kernel reaches the surface or the bottom
+    sphTest::tankSpec spec;
+    spec.H = 3*spec.dr;
+    sphTest::sphTank tank("spreadThin", spec);
+    spreadBlock(tank, 1.5);
+    label nWhole = 0;
+    EXPECT_EQ(spreadOf(tank, nWhole), -1);
+    EXPECT_LT(nWhole, 10);
+    string what;
+    const SPH::spreadLimit tight(sphTest::dict("maxSpread 0.01;"));
+    EXPECT_EQ(tight.find(*tank.cloud, tank.parts->positions(), *tank.runTime, what), -1);
+}
+
+
+TEST(spreadLimit, defaultAndBadEntries)
+{
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+    const SPH::spreadLimit byDefault(sphTest::dict(""));
+    EXPECT_NE(byDefault.describe().find("maxSpread 0.25"), std::string::npos);
+    for (const std::string bad : {"maxSpread 0;", "maxSpread -0.1;", "maxSpread x;"})
+    {
+        EXPECT_ANY_THROW(SPH::spreadLimit(sphTest::dict(bad))) << bad;
+    }
+    FatalError.dontThrowExceptions();
+    FatalIOError.dontThrowExceptions();
+}
+
+
+// ************************************************************************* //
