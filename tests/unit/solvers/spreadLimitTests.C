@@ -10,6 +10,8 @@ Description
     - the block spread 10 % each way takes 1.1^2 = 1.21 times the room;
       the check passes it under maxSpread 0.25 and stops it under 0.2,
       naming the entry, the spread and the least filled particle;
+    - the block 5 % closer each way has a negative spread, which the
+      summary at the end prints;
     - the kernels the walls' dummies reach and those the surface or the
       block's side cuts do not count; fewer than ten whole kernels (a thin
       layer) are not checked.
@@ -19,6 +21,7 @@ Description
 #include <gtest/gtest.h>
 #include "../functionObjects/functionObjectTestTools.H"
 #include "spreadLimit.H"
+#include "OStringStream.H"
 
 using namespace Foam;
 
@@ -83,6 +86,24 @@ TEST(spreadLimit, spreadBlockTakesTheRoomItsSpacingSays)
     EXPECT_LT(i, tank.nFluid);
     EXPECT_NE(what.find("more than maxSpread 0.2 (system/sphSchemes)"), std::string::npos) << what;
     EXPECT_NE(what.find("a spread of 0.209"), std::string::npos) << what;
+}
+
+
+TEST(spreadLimit, compressedBlockHasANegativeSpreadAndReportsIt)
+{
+    // 5 % closer each way: 0.95^2 - 1 = -0.0975 (WCSPH's water under its
+    // own weight is a little denser than the lattice)
+    sphTest::sphTank tank("spreadCompressed");
+    spreadBlock(tank, 0.95);
+    label nWhole = 0;
+    EXPECT_NEAR(spreadOf(tank, nWhole), -0.0975, 0.002);
+    SPH::spreadLimit check(sphTest::dict(""));
+    string what;
+    EXPECT_EQ(check.find(*tank.cloud, tank.parts->positions(), *tank.runTime, what), -1);
+    check.accept();
+    OStringStream os;
+    check.printSummary(os);
+    EXPECT_NE(os.str().find("Largest spread of the fluid: -0.09"), std::string::npos) << os.str();
 }
 
 

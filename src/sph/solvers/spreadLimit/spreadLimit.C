@@ -104,7 +104,8 @@ Foam::SPH::spreadLimit::spreadLimit(const dictionary& schemes)
             "the largest fraction of room the fluid may take beyond its"
             " particles' volumes (1/mean kernel sum - 1)"
         )
-    )
+    ),
+    measuredIndex_(-1)
 {}
 
 
@@ -153,10 +154,15 @@ Foam::label Foam::SPH::spreadLimit::find
     string& what
 ) const
 {
+    const label index = runTime.timeIndex();
+    if (measuredIndex_ >= 0 && index < measuredIndex_ + 100) return -1;
+    measuredIndex_ = index;
     label nWhole = 0;
     const scalar s = spread(cloud, nWhole);
     if (passes(s, runTime.value())) return -1;
 
+    // A retried step (retryOnFailure) is measured again
+    measuredIndex_ = -1;
     what =
         "The fluid takes " + Foam::name(1 + s) + " times the room its"
         " particles' volumes fill (mean kernel sum of " + Foam::name(nWhole)
@@ -170,7 +176,8 @@ Foam::label Foam::SPH::spreadLimit::find
 
 void Foam::SPH::spreadLimit::printSummary(Ostream& os) const
 {
-    if (reached_ < 0) return;
+    // A compressed fluid's spread is below 0; -1 is "never measured"
+    if (reached_ <= -1) return;
     os  << "Largest spread of the fluid: " << reached_ << " (t = "
         << tReached_ << " s; 1/mean kernel sum of whole kernels - 1),"
         << " maxSpread " << limit_ << nl;
