@@ -128,7 +128,7 @@ TEST(spreadLimit, defaultAndBadEntries)
     FatalError.throwExceptions();
     FatalIOError.throwExceptions();
     const SPH::spreadLimit byDefault(sphTest::dict(""));
-    EXPECT_NE(byDefault.describe().find("maxSpread 0.25"), std::string::npos);
+    EXPECT_NE(byDefault.describe().find("maxSpread 0.1 "), std::string::npos);
     for (const std::string bad : {"maxSpread 0;", "maxSpread -0.1;", "maxSpread x;"})
     {
         EXPECT_ANY_THROW(SPH::spreadLimit(sphTest::dict(bad))) << bad;

@@ -100,7 +100,7 @@ Foam::SPH::spreadLimit::spreadLimit(const dictionary& schemes)
     (
         checkedScalar
         (
-            schemes, "maxSpread", 0.25, {0, VGREAT, true},
+            schemes, "maxSpread", 0.1, {0, VGREAT, true},
             "the largest fraction of room the fluid may take beyond its"
             " particles' volumes (1/mean kernel sum - 1)"
         )
