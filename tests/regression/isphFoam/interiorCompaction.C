@@ -84,17 +84,7 @@ namespace
     std::string tail(const std::string& s)
     {
         return s.size() > 3000 ? s.substr(s.size() - 3000) : s;
-    }
-
-    //- The run's largest spread (SPH::spreadLimit's line at the end), or
-    //- -2 without the line
-    scalar largestSpread(const std::string& out)
-    {
-        const std::string key = "Largest spread of the fluid: ";
-        const std::size_t at = out.find(key);
-        return at == std::string::npos ? -2 : std::stod(out.substr(at + key.size()));
-    }
-}
+    }}
 
 
 TEST(isphFoamInteriorCompaction, givesBackTheRoomASpreadTankTookAndLeavesStillWaterAlone)
@@ -111,7 +101,7 @@ TEST(isphFoamInteriorCompaction, givesBackTheRoomASpreadTankTookAndLeavesStillWa
     EXPECT_EQ(out.find("Diluted interior particles"), std::string::npos) << tail(out);
     const scalar topKept = top(kept, "1");
     // The time loop's spreadLimit sees the room kept: 1.03^2 - 1
-    const scalar spreadKept = largestSpread(out);
+    const scalar spreadKept = sphTest::numberAfter(out, "Largest spread of the fluid: ");
     EXPECT_NEAR(spreadKept, 0.0609, 0.005) << tail(out);
 
     const fileName pulled = meshedTank("isphSpreadPulled", "1");

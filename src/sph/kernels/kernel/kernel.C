@@ -78,4 +78,25 @@ Foam::SPH::kernel::kernel
 }
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::SPH::kernel::latticeSum() const
+{
+    const label m = label(support()/dr_) + 1;
+    scalar sum = 0;
+    for (label i = -m; i <= m; ++i)
+    {
+        for (label j = -m; j <= m; ++j)
+        {
+            const scalar r = mag(vector2D(dr_*i, dr_*j));
+            if (r < support())
+            {
+                sum += dr_*dr_*W(r);
+            }
+        }
+    }
+    return sum;
+}
+
+
 // ************************************************************************* //

@@ -49,7 +49,7 @@ Foam::scalar Foam::SPH::spreadLimit::meanFill
 )
 {
     const label nFluid = cloud.nFluid();
-    const scalar full = latticeSum(cloud.W());
+    const scalar full = cloud.W().latticeSum();
     scalar total = 0;
     label n = 0;
     dispatch(cloud.W(), [&](const auto& K)
@@ -73,7 +73,7 @@ Foam::scalar Foam::SPH::spreadLimit::meanFill
 
 Foam::label Foam::SPH::spreadLimit::leastFilled(const sphCloud& cloud)
 {
-    const scalar full = latticeSum(cloud.W());
+    const scalar full = cloud.W().latticeSum();
     label aLeast = -1;
     scalar least = VGREAT;
     dispatch(cloud.W(), [&](const auto& K)
@@ -111,22 +111,6 @@ Foam::SPH::spreadLimit::spreadLimit(const dictionary& schemes)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::SPH::spreadLimit::latticeSum(const kernel& K)
-{
-    const scalar dr = K.dr();
-    const label m = label(K.support()/dr) + 1;
-    scalar sum = 0;
-    for (label i = -m; i <= m; ++i)
-    {
-        for (label j = -m; j <= m; ++j)
-        {
-            sum += K.W(dr*std::hypot(scalar(i), scalar(j)));
-        }
-    }
-    return sqr(dr)*sum;
-}
-
-
 Foam::scalar Foam::SPH::spreadLimit::spread
 (
     const sphCloud& cloud,
@@ -134,7 +118,7 @@ Foam::scalar Foam::SPH::spreadLimit::spread
 )
 {
     const scalar mean = meanFill(cloud, nWhole);
-    return nWhole < 10 ? -1 : 1/mean - 1;
+    return nWhole < minWhole ? -1 : 1/mean - 1;
 }
 
 
@@ -155,7 +139,7 @@ Foam::label Foam::SPH::spreadLimit::find
 ) const
 {
     const label index = runTime.timeIndex();
-    if (measuredIndex_ >= 0 && index < measuredIndex_ + 100) return -1;
+    if (measuredIndex_ >= 0 && index < measuredIndex_ + interval) return -1;
     measuredIndex_ = index;
     label nWhole = 0;
     const scalar s = spread(cloud, nWhole);

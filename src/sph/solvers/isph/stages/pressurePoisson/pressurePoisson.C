@@ -166,12 +166,11 @@ void Foam::SPH::pressurePoisson::interiorRows(const Kernel& K, const scalar dt)
     // is water (a free-surface neighbour leaves the sum short by the air's
     // side, not by dilution)
     isphWork& w = work_;
-    if (w.nFluid == 0) return;
     const label* off = w.nbrs.offsets().cdata();
     const label* nbr = w.nbrs.indices().cdata();
     const scalar* r = w.nbrs.r().cdata();
     const scalar* gamma = w.usaw.gamma().cdata();
-    const scalar full = latticeSum(K, Foam::sqrt(w.V[0]));
+    const scalar full = latticeSum_;
     const scalar coeff = w.interiorCompaction*w.rho0/sqr(dt);
     for (label i = 0; i < w.nFluid; ++i)
     {
@@ -198,21 +197,6 @@ void Foam::SPH::pressurePoisson::interiorRows(const Kernel& K, const scalar dt)
             ++nCompacted_;
         }
     }
-}
-
-
-template<class Kernel>
-Foam::scalar Foam::SPH::pressurePoisson::latticeSum
-(
-    const Kernel& K,
-    const scalar dr
-)
-{
-    if (latticeSum_ == 0)
-    {
-        latticeSum_ = ghostSurface::halfPlaneSum(K, dr, vector2D(0, 1), -GREAT);
-    }
-    return latticeSum_;
 }
 
 
@@ -261,7 +245,7 @@ Foam::scalar Foam::SPH::pressurePoisson::diluted
         if (b < w.nFluid && r[k] < 0.7*dr) return 0;
         sum += w.V[b]*K.W(r[k]);
     }
-    const scalar rho = sum/(w.usaw.gamma()[i]*latticeSum(K, dr));
+    const scalar rho = sum/(w.usaw.gamma()[i]*latticeSum_);
     // Below 2 % the lattice's disorder (the shifting), not dilution; at
     // most 20 %, so that the pull stays bounded
     return min(max(1 - rho - 0.02, scalar(0)), scalar(0.2));
@@ -298,7 +282,7 @@ Foam::SPH::pressurePoisson::pressurePoisson
     nIterations_(0),
     solveCpuSeconds_(0),
     nFloating_(0),
-    latticeSum_(0),
+    latticeSum_(work.W.latticeSum()),
     nCompacted_(0),
     ghostSp_(work.ghostSurface ? work.parts.size() : 0, Zero),
     pMin_(-VGREAT),
