@@ -11,7 +11,10 @@ Description
     use: with p_v = p_a (1 - r_va.n/delta) and p_a = rho |g| delta, the
     ghosts' gradient part equals that of the hydrostatic pressure. The
     ghosts' kernel sum (freeSurfaceCompaction's density) leaves out the
-    nodes beyond a wall's line, which gamma counts out.
+    nodes beyond a wall's line, which gamma counts out. A surface normal
+    loses its parts into the walls within reach (offWalls): a film's tip
+    in a tank's top corner had its normal into the ceiling 1.05 dr above,
+    its ghosts' p = 0 half-way to it, and was thrown into the corner.
 
 \*---------------------------------------------------------------------------*/
 
@@ -20,6 +23,7 @@ Description
 #include "kernel.H"
 #include "kernelDispatch.H"
 #include "IStringStream.H"
+#include "../operators/operatorTestTools.H"
 
 using namespace Foam;
 
@@ -159,6 +163,64 @@ TEST(ghostSurface, halfPlaneSumLeavesOutTheWallSide)
             SPH::ghostSurface::halfPlaneSum(K, dr, n, delta, -n, 0.5*dr), 0
         );
     });
+}
+
+
+TEST(ghostSurface, normalsDoNotPointIntoNearWalls)
+{
+    // The tank [0, 0.6]^2 at dr = 0.05, vertices on the walls: the fluid
+    // particle at (0.55, 0.55) is dr from the ceiling and the right wall,
+    // the one at (0.40, 0.40) 4 dr from both. Reach 1.5 dr, as isphFoam's
+    const scalar dr = 0.05, reach = 1.5*dr, minOpen = 0.1;
+    const operatorTest::latticeCase c
+    (
+        "tank { type box; min (0 0); max (0.6 0.6); }", dr,
+        operatorTest::layout::nodal, vector2D(0, 0), vector2D(0.6, 0.6), 2
+    );
+    auto particleAt = [&](const vector2D& p)
+    {
+        for (label i = 0; i < c.nFluid; ++i)
+        {
+            if (mag(c.x[i] - p) < 1e-9) return i;
+        }
+        return label(-1);
+    };
+    const label corner = particleAt(vector2D(0.55, 0.55));
+    const label inner = particleAt(vector2D(0.40, 0.40));
+    const label byCeiling = particleAt(vector2D(0.30, 0.55));
+    ASSERT_GE(corner, 0);
+    ASSERT_GE(inner, 0);
+    ASSERT_GE(byCeiling, 0);
+    auto off = [&](const label i, const vector2D& n)
+    {
+        return SPH::ghostSurface::offWalls
+        (
+            *c.usaw, c.x, i, n/mag(n), reach, minOpen
+        );
+    };
+    const scalar tol = 1e-12;
+
+    // Mostly into the ceiling, a little to the open left: left
+    const vector2D tip(off(corner, vector2D(-0.24, 0.97)));
+    EXPECT_NEAR(tip.x(), -1, tol);
+    EXPECT_NEAR(tip.y(), 0, tol);
+
+    // Into both walls: nothing open is left
+    EXPECT_EQ(off(corner, vector2D(0.6, 0.8)), vector2D::zero);
+    // Straight into the ceiling, or nearly (less than minOpen left)
+    EXPECT_EQ(off(byCeiling, vector2D(0, 1)), vector2D::zero);
+    EXPECT_EQ(off(byCeiling, vector2D(0.05, 1)), vector2D::zero);
+
+    // Away from the walls, or along them: unchanged
+    for (const vector2D& n : {vector2D(-0.6, -0.8), vector2D(-1, 0)})
+    {
+        const vector2D kept(off(corner, n));
+        EXPECT_NEAR(mag(kept - n/mag(n)), 0, tol) << n;
+    }
+
+    // Walls beyond reach: a normal towards them is the surface's
+    const vector2D towards(0.6, 0.8);
+    EXPECT_NEAR(mag(off(inner, towards) - towards), 0, tol);
 }
 
 

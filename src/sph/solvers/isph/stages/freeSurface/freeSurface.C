@@ -102,7 +102,7 @@ void Foam::SPH::freeSurface::setNormals()
     const label nFluid = w.nFluid;
     const label* seg = w.usaw.segments().cdata();
     const List<vector2D>& wallNormal = w.usaw.segmentNormals();
-    const label* surface = w.surface.cdata();
+    label* surface = w.surface.data();
     dispatch(w.W, [&](const auto& K)
     {
         if (w.latticeMoment == tensor2D::zero)
@@ -147,7 +147,20 @@ void Foam::SPH::freeSurface::setNormals()
             nFluidNbrs += nbr[k] < nFluid && nbr[k] != i;
         }
         if (nFluidNbrs < minDropletNeighbours) continue;
-        vector2D nI(-gradOne_[i]/g);
+        vector2D nI
+        (
+            ghostSurface::offWalls
+            (
+                w.usaw, w.parts.positions(), i, -gradOne_[i]/g,
+                wallGap*w.surfaceDistance, minOpenPart
+            )
+        );
+        if (nI == vector2D::zero)
+        {
+            surface[i] = 0;
+            --nSurface_;
+            continue;
+        }
         const label nearest = ghostSurface::nearestSegment(w, i);
         if (nearest >= 0)
         {
