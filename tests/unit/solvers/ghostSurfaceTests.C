@@ -205,7 +205,8 @@ TEST(ghostSurface, normalsDoNotPointIntoNearWalls)
     EXPECT_NEAR(tip.x(), -1, tol);
     EXPECT_NEAR(tip.y(), 0, tol);
 
-    // Into both walls: nothing open is left
+    // Into both walls (the ceiling 1.25 dr along it, then the right wall
+    // dr along what is left): nothing open is left
     EXPECT_EQ(off(corner, vector2D(0.6, 0.8)), vector2D::zero);
     // Straight into the ceiling, or nearly (less than minOpen left)
     EXPECT_EQ(off(byCeiling, vector2D(0, 1)), vector2D::zero);
@@ -217,6 +218,11 @@ TEST(ghostSurface, normalsDoNotPointIntoNearWalls)
         const vector2D kept(off(corner, n));
         EXPECT_NEAR(mag(kept - n/mag(n)), 0, tol) << n;
     }
+
+    // A normal that meets the near ceiling only at a glancing angle, 4 dr
+    // along it (a contact line under an overhanging wall): unchanged
+    const vector2D glancing(0.97, 0.24);
+    EXPECT_NEAR(mag(off(byCeiling, glancing) - glancing/mag(glancing)), 0, tol);
 
     // Walls beyond reach: a normal towards them is the surface's
     const vector2D towards(0.6, 0.8);
