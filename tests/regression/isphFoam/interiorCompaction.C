@@ -84,7 +84,8 @@ namespace
     std::string tail(const std::string& s)
     {
         return s.size() > 3000 ? s.substr(s.size() - 3000) : s;
-    }}
+    }
+}
 
 
 TEST(isphFoamInteriorCompaction, givesBackTheRoomASpreadTankTookAndLeavesStillWaterAlone)
