@@ -294,6 +294,13 @@ void Foam::SPH::wcsph::addStages()
             )
         );
     }
+    else if (schemes_.found("interiorCompaction"))
+    {
+        // It gives back the room the shift makes; alone it would do nothing
+        FatalIOErrorInFunction(schemes_.lookup("interiorCompaction"))
+            << "Entry interiorCompaction is read by wcsphFoam's shifting only:"
+            << " set shifting yes, or remove the entry" << exit(FatalIOError);
+    }
     stages_.add
     (
         new memberStage<wcsph>

@@ -62,7 +62,18 @@ Foam::SPH::wcsphShifting::wcsphShifting
         )
     ),
     nSurface_(0),
-    hasFreeSurface_(true)
+    hasFreeSurface_(true),
+    compaction_
+    (
+        checkedScalar
+        (
+            schemes, "interiorCompaction", scalar(0), {0, 1},
+            "alpha: the fraction of a whole kernel's deficit beyond 2 %"
+            " taken off its density each step"
+        )
+    ),
+    latticeSum_(W.latticeSum()),
+    nCompacted_(0)
 {
     if (!(coeff_ > 0))
     {
@@ -128,6 +139,46 @@ void Foam::SPH::wcsphShifting::freeSurfaceOff()
 }
 
 
+template<class Kernel>
+void Foam::SPH::wcsphShifting::compact(const Kernel& K)
+{
+    const label nFluid = work_.nFluid;
+    const label* off = work_.nbrs.offsets().cdata();
+    const label* nbr = work_.nbrs.indices().cdata();
+    const vector2D* rij = work_.nbrs.rij().cdata();
+    const scalar* r = work_.nbrs.r().cdata();
+    scalarField& rho = work_.parts.field<scalar>("rho");
+    const scalar fillPerW = sqr(work_.dr)/latticeSum_;
+    const scalar firstMomentTol = 0.02*K.h();
+    nCompacted_ = 0;
+    for (label i = 0; i < nFluid; ++i)
+    {
+        scalar sum = K.W(0);
+        vector2D moment(0, 0);
+        bool byWall = false;
+        for (label k = off[i]; k < off[i + 1] && !byWall; ++k)
+        {
+            byWall = nbr[k] >= nFluid;
+            const scalar w = K.W(r[k]);
+            sum += w;
+            moment += w*rij[k];
+        }
+        const scalar deficit = 1 - fillPerW*sum;
+        if
+        (
+            byWall || mag(moment) > firstMomentTol*sum
+         || deficit <= 0.02 || deficit > 0.1
+        )
+        {
+            continue;
+        }
+        rho[i] *= 1 - compaction_*(deficit - 0.02);
+        V_[i] = mass_[i]/rho[i];
+        ++nCompacted_;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::SPH::wcsphShifting::describe(Ostream& os) const
@@ -143,12 +194,22 @@ void Foam::SPH::wcsphShifting::describe(Ostream& os) const
            )
         << freeSurfaceDivR_ << (hasFreeSurface_ ? ")" : " at the start)")
         << (walls_ == noUsaw_.get() ? " (SPH sums over fluid and walls)" : "");
+    if (compaction_ > 0)
+    {
+        os  << "; density lowered by " << compaction_
+            << " (deficit - 0.02) a step where a whole kernel is 2-10 % short"
+            << " (interiorCompaction)";
+    }
 }
 
 
 void Foam::SPH::wcsphShifting::execute(const scalar dt)
 {
     prepare();
+    if (compaction_ > 0)
+    {
+        dispatch(kernel_, [&](const auto& K) { compact(K); });
+    }
 
     vector2DField& U = work_.parts.field<vector2D>("U");
     const label nFluid = work_.nFluid;
