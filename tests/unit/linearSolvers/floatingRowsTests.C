@@ -5,7 +5,9 @@ Description
     SPH::reachesAnAnchor (src/sph/linearSolvers/floatingRows): which rows of
     a weakly diagonally dominant matrix reach a strictly dominant row. A
     chain to an anchor, a set coupled only among itself, a set joined to
-    the anchored rows by a kernel's tail (1e-42) only, links that run one
+    the anchored rows by a kernel's tail (1e-42) only, a set held by links
+    of less than 1e-4 of its diagonal (nonsingular, but a level 1e4 times
+    as sensitive to its sources), links that run one
     way, Dirichlet rows skipped, and rows marked as anchors; each verdict
     against Eigen's SparseLU (singular or not). And two whose answer does
     not depend on the order of the rows: a chain numbered back and forth
@@ -126,6 +128,55 @@ TEST(floatingRows, aKernelsTailIsNoLink)
         SPH::reachesAnAnchor(M, none(4), none(4)), {true, true, true, true}
     );
     EXPECT_FALSE(singular(M));
+}
+
+
+TEST(floatingRows, aSetHeldByLinksOfLessThan1e4OfItsDiagonalFloats)
+{
+    // The 2 mm obstacle dam-break at 0.574 s: a particle pressed under the
+    // ceiling, held to the liquid by entries of 2e-6 to 3e-5 of its
+    // diagonal and itself dominant by 1e-5, with the ceiling's vertices
+    // coupled among themselves. Its set is nonsingular, but its level is
+    // 1e5 times as sensitive to its sources as the liquid's: it was solved
+    // at 3.3e8 Pa. Rows 2 and 3 here: 3e-5 to the anchored pair, and
+    // row 3 dominant by 1e-5 of its off-diagonal sum
+    const auto weak = matrix
+    (
+        4,
+        {{0, 1, 1}, {1, 0, 1}, {2, 3, 1}, {3, 2, 1}, {2, 1, 3e-5}},
+        {0, 0.5, 0, 1e-5}
+    );
+    expectReaches
+    (
+        SPH::reachesAnAnchor(weak, none(4), none(4)), {true, true, false, false}
+    );
+    EXPECT_FALSE(singular(weak));
+
+    // The same set through 1e-3 of the diagonal, or dominant by 1e-3 of
+    // its sum, is held
+    expectReaches
+    (
+        SPH::reachesAnAnchor(twoPairs(1e-3), none(4), none(4)),
+        {true, true, true, true}
+    );
+    const auto dominant = matrix
+    (
+        4, {{0, 1, 1}, {1, 0, 1}, {2, 3, 1}, {3, 2, 1}}, {0, 0.5, 0, 1e-3}
+    );
+    expectReaches
+    (
+        SPH::reachesAnAnchor(dominant, none(4), none(4)), {true, true, true, true}
+    );
+
+    // How sensitive: the pair's level under a unit source, against the
+    // anchored pair's
+    Eigen::SparseMatrix<scalar> A(weak);
+    Eigen::SparseLU<Eigen::SparseMatrix<scalar>> lu;
+    lu.compute(A);
+    Eigen::VectorXd b(4);
+    b << 1, 1, 1, 1;
+    const Eigen::VectorXd x = lu.solve(b);
+    EXPECT_GT(std::abs(x(2)), 1e4*std::abs(x(0)));
 }
 
 

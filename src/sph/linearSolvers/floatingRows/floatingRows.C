@@ -14,10 +14,16 @@ namespace
 
 using namespace Foam;
 
-//- A significant link: an entry of row i at or above 1e-10 of its diagonal
+//- The least share of a row's diagonal that makes an entry a link, and
+//- the least excess of the diagonal over the off-diagonal sum that makes
+//- the row an anchor (see floatingRows.H)
+constexpr scalar minLink = 1e-4;
+constexpr scalar minExcess = 1e-4;
+
+//- A significant link: an entry of row i at or above minLink of its diagonal
 inline bool links(const scalar value, const scalar diag)
 {
-    return mag(value) > 1e-10*diag;
+    return mag(value) > minLink*diag;
 }
 
 
@@ -101,7 +107,7 @@ Foam::boolList Foam::SPH::reachesAnAnchor
         }
         if (skip[i]) continue;
         reaches[i] =
-            anchor[i] || diag[i] > off*(1 + 1e-9)
+            anchor[i] || diag[i] > off*(1 + minExcess)
          || linksToReached(M, i, diag, reaches);
         if (!reaches[i]) open.append(i);
     }

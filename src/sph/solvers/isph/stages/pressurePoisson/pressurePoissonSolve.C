@@ -48,12 +48,12 @@ void Foam::SPH::pressurePoisson::wallCondition(const scalar dt)
 Foam::label Foam::SPH::pressurePoisson::anchorFloatingClusters()
 {
     // Rows that reach no anchor (SPH::reachesAnAnchor) leave the system
-    // singular: a droplet sliding down a wall, all its particles kept off
-    // the surface by the wall-crossing test (39) (the 4 mm obstacle
-    // dam-break); a pair joined to the liquid by a kernel's tail only (the
-    // water wheel at dr 0.02 m, t = 15.35 s, where GMRES stalled). Their
-    // fluid particles get p = 0, the air's; so do the vertex particles
-    // that still float then (a wall whose fluid neighbours are all at 0)
+    // singular, or nearly: a droplet sliding down a wall, all its particles
+    // kept off the surface by the wall-crossing test (39) (the 4 mm
+    // obstacle dam-break); a pair joined to the liquid by a kernel's tail
+    // only (the water wheel at dr 0.02 m, t = 15.35 s, where GMRES
+    // stalled). Their fluid particles, then the vertex particles that still
+    // float, are held (Dirichlet rows)
     const sparseMatrix& M = laplacian_.matrix();
     const label n = M.rows();
     labelList& kind = laplacian_.kinds();
@@ -65,12 +65,35 @@ Foam::label Foam::SPH::pressurePoisson::anchorFloatingClusters()
     boolList fixed(n, false);
     boolList reaches(reachesAnAnchor(M, dirichlet, fixed));
 
+    // A set held to the liquid by weak links only (below floatingRows'
+    // share of the diagonal) takes the liquid's last pressure across them,
+    // weighted by their entries (0 with none: a droplet): its own level
+    // would be its sources over those links (3.3e8 Pa for a particle
+    // pressed under the 2 mm obstacle dam-break's ceiling)
+    const scalarField& p = work_.parts.field<scalar>("p");
+    const vector2DField& x = work_.parts.positions();
+    scalarList& f = laplacian_.dirichletValues();
+    auto fix = [&](const label i)
+    {
+        scalar sumW = 0, sumWp = 0;
+        for (sparseMatrix::InnerIterator it(M, i); it; ++it)
+        {
+            const label j = it.col();
+            if (j != i && (reaches[j] || fixed[j]) && !dirichlet[j])
+            {
+                sumW += mag(it.value());
+                sumWp += mag(it.value())*p[j];
+            }
+        }
+        kind[i] = laplacianMatrix::dirichlet;
+        f[i] = (work_.g & x[i]) - (sumW > 0 ? sumWp/sumW : 0)/work_.rho0;
+    };
     label nFixed = 0;
     for (label i = 0; i < work_.nFluid; ++i)
     {
         if (!dirichlet[i] && !reaches[i])
         {
-            kind[i] = laplacianMatrix::dirichlet;
+            fix(i);
             work_.surfaceNormal[i] = Zero;
             fixed[i] = true;
             ++nFixed;
@@ -85,7 +108,7 @@ Foam::label Foam::SPH::pressurePoisson::anchorFloatingClusters()
     {
         if (!dirichlet[i] && !reaches[i])
         {
-            kind[i] = laplacianMatrix::dirichlet;
+            fix(i);
             ++nFixed;
         }
     }
