@@ -15,7 +15,6 @@ Description
 #include "testCase.H"
 #include "particleFields.H"
 
-#include "IOField.H"
 #include "vector2D.H"
 
 using namespace Foam;
@@ -28,43 +27,11 @@ namespace
     //- The still tank at dr = 0.05 (H = 0.5 m) to endTime, meshed
     fileName meshedTank(const std::string& name, const std::string& endTime)
     {
-        const fileName dir = sphTest::copyTutorial("isph/hydrostaticTank", name);
-        std::string out;
-        EXPECT_EQ
+        return sphTest::meshedTutorial
         (
-            run
-            (
-                "sed -i 's/^dr .*/dr 0.05;/' " + dir/"system"/"sphMeshDict"
-              + " && sed -i 's/^endTime .*/endTime " + endTime + ";/' "
-              + dir/"system"/"controlDict"
-              + " && " + bin + "sphMesh -case " + dir,
-                out
-            ),
-            0
-        ) << out;
-        return dir;
-    }
-
-    //- Spread the fluid particles by factor about (x0, 0): their volumes
-    //- stay dr^2, so the kernel sum falls to 1/factor^2 of the lattice's
-    void spread(const fileName& dir, const scalar factor, const scalar x0)
-    {
-        auto runTime = sphTest::makeTime(dir);
-        IOField<vector2D> x
-        (
-            IOobject
-            (
-                "positions", "constant", "sphMesh/fluid", *runTime,
-                IOobject::MUST_READ, IOobject::NO_WRITE, false
-            )
-        );
-        for (vector2D& p : x)
-        {
-            p = vector2D(x0 + factor*(p.x() - x0), factor*p.y());
-        }
-        x.writeObject
-        (
-            IOstream::BINARY, IOstream::currentVersion, IOstream::UNCOMPRESSED, true
+            "isph/hydrostaticTank", name,
+            "sed -i 's/^dr .*/dr 0.05;/' system/sphMeshDict"
+            " && sed -i 's/^endTime .*/endTime " + endTime + ";/' system/controlDict"
         );
     }
 
@@ -97,7 +64,7 @@ TEST(isphFoamInteriorCompaction, givesBackTheRoomASpreadTankTookAndLeavesStillWa
     // top comes down about a third of the way (measured 0.5098 m at 1 s)
     std::string out;
     const fileName kept = meshedTank("isphSpreadKept", "1");
-    spread(kept, 1.03, 0.5);
+    sphTest::spreadMeshedFluid(*sphTest::makeTime(kept), 1.03, 0.5);
     ASSERT_EQ(run(bin + "isphFoam -case " + kept, out), 0) << tail(out);
     EXPECT_EQ(out.find("Diluted interior particles"), std::string::npos) << tail(out);
     const scalar topKept = top(kept, "1");
@@ -106,7 +73,7 @@ TEST(isphFoamInteriorCompaction, givesBackTheRoomASpreadTankTookAndLeavesStillWa
     EXPECT_NEAR(spreadKept, 0.0609, 0.005) << tail(out);
 
     const fileName pulled = meshedTank("isphSpreadPulled", "1");
-    spread(pulled, 1.03, 0.5);
+    sphTest::spreadMeshedFluid(*sphTest::makeTime(pulled), 1.03, 0.5);
     ASSERT_EQ(run("echo 'interiorCompaction 0.1;' >> " + pulled/"system"/"sphSchemes", out), 0);
     ASSERT_EQ(run(bin + "isphFoam -case " + pulled, out), 0) << tail(out);
     EXPECT_NE
@@ -144,7 +111,7 @@ TEST(isphFoamInteriorCompaction, aSpreadBeyondMaxSpreadStopsTheRunLoudly)
     // step, with the entry, the figures and the least filled particle; the
     // start is the last good state
     const fileName dir = meshedTank("isphSpreadStops", "1");
-    spread(dir, 1.03, 0.5);
+    sphTest::spreadMeshedFluid(*sphTest::makeTime(dir), 1.03, 0.5);
     std::string out;
     ASSERT_EQ(run("echo 'maxSpread 0.03;' >> " + dir/"system"/"sphSchemes", out), 0);
     EXPECT_EQ(run(bin + "isphFoam -case " + dir, out), 1) << tail(out);

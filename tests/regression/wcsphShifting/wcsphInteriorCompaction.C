@@ -15,7 +15,6 @@ Description
 #include "testCase.H"
 #include "particleFields.H"
 
-#include "IOField.H"
 #include "vector2D.H"
 
 #include <algorithm>
@@ -37,46 +36,13 @@ namespace
         const std::string& schemes
     )
     {
-        const fileName dir = sphTest::copyTutorial("wcsph/hydrostaticTank", name);
-        std::string out;
-        EXPECT_EQ
+        return sphTest::meshedTutorial
         (
-            run
-            (
-                "sed -i 's/^dr .*/dr 0.05;/' " + dir/"system"/"sphMeshDict"
-              + " && sed -i 's/^endTime .*/endTime " + endTime + ";/;"
-                " s/^writeInterval .*/writeInterval 0.5;/' "
-              + dir/"system"/"controlDict"
-              + " && printf 'shifting yes;\\n" + schemes + "' >> "
-              + dir/"system"/"sphSchemes"
-              + " && " + bin + "sphMesh -case " + dir,
-                out
-            ),
-            0
-        ) << out;
-        return dir;
-    }
-
-    //- Spread the fluid particles by factor about (x0, 0): their masses
-    //- stay rho0 dr^2, so the kernel sum falls to 1/factor^2 of the lattice's
-    void spread(const fileName& dir, const scalar factor, const scalar x0)
-    {
-        auto runTime = sphTest::makeTime(dir);
-        IOField<vector2D> x
-        (
-            IOobject
-            (
-                "positions", "constant", "sphMesh/fluid", *runTime,
-                IOobject::MUST_READ, IOobject::NO_WRITE, false
-            )
-        );
-        for (vector2D& p : x)
-        {
-            p = vector2D(x0 + factor*(p.x() - x0), factor*p.y());
-        }
-        x.writeObject
-        (
-            IOstream::BINARY, IOstream::currentVersion, IOstream::UNCOMPRESSED, true
+            "wcsph/hydrostaticTank", name,
+            "sed -i 's/^dr .*/dr 0.05;/' system/sphMeshDict"
+            " && sed -i 's/^endTime .*/endTime " + endTime + ";/;"
+            " s/^writeInterval .*/writeInterval 0.5;/' system/controlDict"
+            " && printf 'shifting yes;\\n" + schemes + "' >> system/sphSchemes"
         );
     }
 
@@ -126,7 +92,7 @@ TEST(wcsphInteriorCompaction, givesBackTheRoomASpreadTankTookAndLeavesStillWater
     // 0.018 at 0.5 and 1 s, the top ten at 0.488 m (the lattice's: 0.475)
     std::string out;
     const fileName kept = meshedTank("wcsphSpreadKept", "1", "");
-    spread(kept, 1.03, 0.5);
+    sphTest::spreadMeshedFluid(*sphTest::makeTime(kept), 1.03, 0.5);
     ASSERT_EQ(run(bin + "wcsphFoam -case " + kept, out), 0) << tail(out);
     EXPECT_EQ(out.find("densities lowered"), std::string::npos) << tail(out);
     const scalar spreadKept =
@@ -136,7 +102,7 @@ TEST(wcsphInteriorCompaction, givesBackTheRoomASpreadTankTookAndLeavesStillWater
     const scalar topKept = top(kept, "1");
 
     const fileName pulled = meshedTank("wcsphSpreadPulled", "1", "interiorCompaction 0.1;\\n");
-    spread(pulled, 1.03, 0.5);
+    sphTest::spreadMeshedFluid(*sphTest::makeTime(pulled), 1.03, 0.5);
     ASSERT_EQ(run(bin + "wcsphFoam -case " + pulled, out), 0) << tail(out);
     EXPECT_NE(out.find("density lowered by 0.1 (deficit - 0.02) a step where a whole"
         " kernel is 2-10 % short (interiorCompaction)"), std::string::npos)
