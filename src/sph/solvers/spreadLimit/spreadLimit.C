@@ -37,8 +37,7 @@ Foam::scalar Foam::SPH::spreadLimit::fill
         }
     );
     // A surface within the kernel tilts its first moment (a lattice's is 0)
-    if (byWall || mag(moment) > 0.02*K.h()*sum) return -1;
-    return sqr(cloud.dr())*sum/full;
+    return wholeKernelFill(sum, moment, byWall, K.h(), sqr(cloud.dr())/full);
 }
 
 

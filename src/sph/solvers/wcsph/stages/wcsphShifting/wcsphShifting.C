@@ -6,6 +6,7 @@
 #include "checkedEntry.H"
 #include "kernelDispatch.H"
 #include "freeSurfaceRegion.H"
+#include "spreadLimit.H"
 
 #include <cmath>
 
@@ -148,8 +149,7 @@ void Foam::SPH::wcsphShifting::compact(const Kernel& K)
     const vector2D* rij = work_.nbrs.rij().cdata();
     const scalar* r = work_.nbrs.r().cdata();
     scalarField& rho = work_.parts.field<scalar>("rho");
-    const scalar fillPerW = sqr(work_.dr)/latticeSum_;
-    const scalar firstMomentTol = 0.02*K.h();
+    const scalar dr2ByFull = sqr(work_.dr)/latticeSum_;
     nCompacted_ = 0;
     for (label i = 0; i < nFluid; ++i)
     {
@@ -163,12 +163,10 @@ void Foam::SPH::wcsphShifting::compact(const Kernel& K)
             sum += w;
             moment += w*rij[k];
         }
-        const scalar deficit = 1 - fillPerW*sum;
-        if
-        (
-            byWall || mag(moment) > firstMomentTol*sum
-         || deficit <= 0.02 || deficit > 0.1
-        )
+        const scalar fill =
+            spreadLimit::wholeKernelFill(sum, moment, byWall, K.h(), dr2ByFull);
+        const scalar deficit = 1 - fill;
+        if (fill < 0 || deficit <= 0.02 || deficit > 0.1)
         {
             continue;
         }
