@@ -10,21 +10,27 @@
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::SPH::shifting::neighbourRange(const scalarField& f)
+template<class Type>
+void Foam::SPH::shifting::neighbourRange
+(
+    const UList<Type>& f,
+    List<Type>& fMin,
+    List<Type>& fMax
+) const
 {
     const isphWork& w = work_;
     const label* off = w.nbrs.offsets().cdata();
     const label* nbr = w.nbrs.indices().cdata();
     for (label i = 0; i < w.nFluid; ++i)
     {
-        scalar lo = f[i], hi = f[i];
+        Type lo = f[i], hi = f[i];
         for (label j = off[i]; j < off[i + 1]; ++j)
         {
             lo = min(lo, f[nbr[j]]);
             hi = max(hi, f[nbr[j]]);
         }
-        fMin_[i] = lo;
-        fMax_[i] = hi;
+        fMin[i] = lo;
+        fMax[i] = hi;
     }
 }
 
@@ -41,6 +47,8 @@ void Foam::SPH::shifting::execute(const scalar dt)
         usaw::gradMinus(K, w.nbrs, w.usaw, w.V, U, gradU_);
     });
 
+    neighbourRange(U, uMin_, uMax_);
+
     const scalar coeff = coeff_*sqr(w.W.h());
     const label* nearSurface = w.nearSurface.cdata();
     vector2D* x = w.parts.positions().data();
@@ -49,7 +57,7 @@ void Foam::SPH::shifting::execute(const scalar dt)
     {
         if (nearSurface[i]) continue;
         const vector2D delta(-coeff*gradC_[i]);
-        U[i] += delta & gradU_[i];
+        U[i] = min(max(U[i] + (delta & gradU_[i]), uMin_[i]), uMax_[i]);
         x[i] += delta;
         maxShift2 = max(maxShift2, magSqr(delta));
     }
@@ -64,7 +72,7 @@ void Foam::SPH::shifting::execute(const scalar dt)
         {
             usaw::gradMinus(K, w.nbrs, w.usaw, w.V, f, gradF_);
         });
-        neighbourRange(f);
+        neighbourRange(f, fMin_, fMax_);
         for (label i = 0; i < w.nFluid; ++i)
         {
             if (nearSurface[i]) continue;
