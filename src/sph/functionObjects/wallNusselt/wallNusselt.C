@@ -25,6 +25,13 @@ namespace functionObjects
 }
 }
 
+const Foam::Enum<Foam::SPH::functionObjects::wallNusselt::wallGradientScheme>
+Foam::SPH::functionObjects::wallNusselt::wallGradientSchemeNames
+({
+    { wallGradientScheme::gamma, "gamma" },
+    { wallGradientScheme::renormalised, "renormalised" },
+});
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -47,12 +54,17 @@ void Foam::SPH::functionObjects::wallNusselt::gradT(List<vector2D>& result)
     nbrs_.build(c.cells(), x, c.W().support(), true);
     usaw_->update(x);
     result.setSize(c.size());
+    const scalarField& T = c.parts().field<scalar>("T");
     dispatch(c.W(), [&](const auto& K)
     {
-        usaw::gradMinus
-        (
-            K, nbrs_, *usaw_, V, c.parts().field<scalar>("T"), result
-        );
+        if (gradScheme_ == wallGradientScheme::gamma)
+        {
+            usaw::gradMinus(K, nbrs_, *usaw_, V, T, result);
+            return;
+        }
+        R_.setSize(c.size());
+        usaw::renormalisation(K, nbrs_, *usaw_, V, x, minMomentDet, R_);
+        usaw::gradMinus(K, nbrs_, *usaw_, V, R_, T, result);
     });
 }
 
@@ -184,6 +196,13 @@ Foam::SPH::functionObjects::wallNusselt::wallNusselt
         (
             dict, "DeltaT", {0, VGREAT, true},
             "reference temperature difference of eq. (42)"
+        )
+    ),
+    gradScheme_
+    (
+        wallGradientSchemeNames.getOrDefault
+        (
+            "wallGradient", dict, wallGradientScheme::renormalised
         )
     ),
     nbrs_(true)
