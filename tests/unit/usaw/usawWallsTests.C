@@ -380,4 +380,51 @@ TEST(usawWalls, refusesKernelsWithoutAClosedForm)
 }
 
 
+
+TEST(usawWalls, holdOffPutsAParticleBackAtDMinAndFlagsIt)
+{
+    // A floor y = 0 from x = 0 to 2; dMin = dr/2; the particles between
+    // vertices (a segment leaves its ends to its neighbours). Particle 0
+    // at 0.3 dr, moving into the floor, is put back to dMin and loses its
+    // velocity towards it (the along-wall part stays); particle 1 at
+    // 0.7 dr is left alone; particle 2 at 0.3 dr, moving away, is put
+    // back and keeps its velocity. The flags name the particles held.
+    const autoPtr<SPH::kernel> W(makeKernel(dr));
+    const SPH::wallMesh walls
+    (
+        makeWalls("floor { type line; points ((0 0) (2 0)); }", dr)
+    );
+    const label nFluid = 3;
+    SPH::usawWalls usaw(walls, *W, nFluid);
+    List<vector2D> x
+    ({
+        vector2D(1.05, 0.3*dr), vector2D(1.35, 0.7*dr), vector2D(0.65, 0.3*dr)
+    });
+    x.append(walls.points());
+    List<vector2D> U(x.size(), vector2D::zero);
+    U[0] = vector2D(1, -2);
+    U[1] = vector2D(1, -2);
+    U[2] = vector2D(1, 2);
+    const List<vector2D> x0(x);
+    usaw.update(x);
+
+    labelList held(nFluid, -1);
+    const scalar dMin = 0.5*dr;
+    EXPECT_EQ(usaw.holdOff(x0, x, U, nFluid, dMin, &held), 2);
+    EXPECT_EQ(held, labelList({1, 0, 1}));
+    EXPECT_NEAR(x[0].y(), dMin, 1e-15);
+    EXPECT_EQ(U[0], vector2D(1, 0));
+    EXPECT_EQ(x[1], x0[1]);
+    EXPECT_EQ(U[1], vector2D(1, -2));
+    EXPECT_NEAR(x[2].y(), dMin, 1e-15);
+    EXPECT_EQ(U[2], vector2D(1, 2));
+
+    // Without flags the same, and the count alone
+    List<vector2D> xAgain(x0), UAgain(U);
+    UAgain[0] = vector2D(1, -2);
+    EXPECT_EQ(usaw.holdOff(x0, xAgain, UAgain, nFluid, dMin), 2);
+    EXPECT_EQ(xAgain[0], x[0]);
+}
+
+
 // ************************************************************************* //

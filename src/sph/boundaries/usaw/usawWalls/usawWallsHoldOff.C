@@ -19,7 +19,8 @@ Foam::label Foam::SPH::usawWalls::holdOff
     UList<vector2D>& x,
     UList<vector2D>& U,
     const label nFluid,
-    const scalar dMin
+    const scalar dMin,
+    UList<label>* held
 ) const
 {
     const label* off = offsets().cdata();
@@ -30,13 +31,14 @@ Foam::label Foam::SPH::usawWalls::holdOff
     vector2D* xp = x.data();
     vector2D* Up = U.data();
     const SPH::domain& dom = domain();
+    label* heldFlag = held ? held->data() : nullptr;
 
     label nHeld = 0;
     #pragma omp parallel for schedule(static) reduction(+:nHeld) \
         if(SPH::worthThreads(nFluid))
     for (label i = 0; i < nFluid; ++i)
     {
-        bool held = false;
+        bool isHeld = false;
         for (label k = off[i]; k < off[i + 1]; ++k)
         {
             const label s = seg[k];
@@ -65,13 +67,17 @@ Foam::label Foam::SPH::usawWalls::holdOff
             {
                 Up[i] -= un*n;
             }
-            held = true;
+            isHeld = true;
         }
-        if (held)
+        if (isHeld)
         {
             xp[i] = dom.wrap(xp[i]);
         }
-        nHeld += held;
+        if (heldFlag)
+        {
+            heldFlag[i] = isHeld;
+        }
+        nHeld += isHeld;
     }
     return nHeld;
 }

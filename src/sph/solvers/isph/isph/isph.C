@@ -556,7 +556,8 @@ void Foam::SPH::isph::printTimes() const
     if (wallDistance_ && wallDistance_->nHeldTotal() > 0)
     {
         Info<< "Particles held off the walls (minWallDistance): "
-            << wallDistance_->nHeldTotal() << " in " << nSteps_ << " steps"
+            << wallDistance_->nHeldTotal() << " in " << nSteps_ << " steps ("
+            << wallDistance_->nHeldSurfaceTotal() << " free-surface rows)"
             << nl;
     }
 }
