@@ -223,7 +223,10 @@ void Foam::SPH::isph::addStages()
     }
     if (minWallDistance > 0)
     {
-        wallDistance_ = &stages_.add(new wallDistance(w, minWallDistance));
+        wallDistance_ = &stages_.add
+        (
+            new wallDistance(w, minWallDistance, freeSurface_)
+        );
     }
     if (thermal_) addDynamicPressure();
 }
@@ -556,9 +559,13 @@ void Foam::SPH::isph::printTimes() const
     if (wallDistance_ && wallDistance_->nHeldTotal() > 0)
     {
         Info<< "Particles held off the walls (minWallDistance): "
-            << wallDistance_->nHeldTotal() << " in " << nSteps_ << " steps ("
-            << wallDistance_->nHeldSurfaceTotal() << " free-surface rows)"
-            << nl;
+            << wallDistance_->nHeldTotal() << " in " << nSteps_ << " steps";
+        if (freeSurface_)
+        {
+            Info<< " (" << wallDistance_->nHeldSurfaceTotal()
+                << " free-surface rows)";
+        }
+        Info<< nl;
     }
 }
 

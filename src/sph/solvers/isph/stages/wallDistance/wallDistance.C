@@ -14,7 +14,7 @@ void Foam::SPH::wallDistance::execute(const scalar dt)
         work_.parts.field<vector2D>("U"), work_.nFluid, dMin_, &held_
     );
     nHeldSurface_ = 0;
-    if (nHeld_ > 0)
+    if (nHeld_ > 0 && freeSurface_)
     {
         forAll(held_, i)
         {
