@@ -4,6 +4,7 @@
 
 #include "wallNusselt.H"
 #include "usawOperators.H"
+#include "renormalisation.H"
 #include "kernelDispatch.H"
 #include "checkedEntry.H"
 #include "mathematicalConstants.H"
@@ -63,7 +64,11 @@ void Foam::SPH::functionObjects::wallNusselt::gradT(List<vector2D>& result)
             return;
         }
         R_.setSize(c.size());
-        usaw::renormalisation(K, nbrs_, *usaw_, V, x, minMomentDet, R_);
+        // Below isphFoam's smallest det(G-{r}) a vertex keeps G-{T}
+        usaw::renormalisation
+        (
+            K, nbrs_, *usaw_, V, x, renormalisation::minMomentDet, R_
+        );
         usaw::gradMinus(K, nbrs_, *usaw_, V, R_, T, result);
     });
 }
