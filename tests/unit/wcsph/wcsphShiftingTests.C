@@ -13,7 +13,11 @@ Description
       in 20 shifts, and so does the rms distance of each particle from its
       lattice site (the lattice is the fixed point);
     - a disturbance across the periodic seam shifts every particle exactly
-      as the same disturbance in the middle of the box.
+      as the same disturbance in the middle of the box;
+    - the correction (38) carries a smooth velocity and density to the
+      shifted positions, and is bounded by the range of the particle's own
+      and its neighbours' values: a particle faster and denser than all its
+      neighbours is not made more so.
 
 \*---------------------------------------------------------------------------*/
 
@@ -220,6 +224,82 @@ TEST(wcsphShifting, acrossThePeriodicSeamAsInTheMiddle)
         EXPECT_LT(mag(seam[k] - middle[k]), 1e-12*dr) << k;
     }
     EXPECT_GT(largest, 1e-3*dr);
+}
+
+
+TEST(wcsphShifting, carriesASmoothFieldToTheShiftedPosition)
+{
+    sphTest::throwOnFatal();
+    latticeCase c;
+    const scalar L = n*dr;
+    auto smoothU = [L](const vector2D& x)
+    {
+        return vector2D
+        (
+            std::sin(constant::mathematical::twoPi*x.y()/L),
+            std::cos(constant::mathematical::twoPi*x.x()/L)
+        );
+    };
+    auto smoothRho = [L](const vector2D& x)
+    {
+        return 1000 + std::sin(constant::mathematical::twoPi*(x.x() + x.y())/L);
+    };
+    Random rnd(7);
+    forAll(c.x, a)
+    {
+        const vector2D jitter(rnd.sample01<scalar>() - 0.5, rnd.sample01<scalar>() - 0.5);
+        c.x[a] = c.dom.wrap(c.x[a] + 0.4*dr*jitter);
+        c.U[a] = smoothU(c.x[a]);
+        c.rho[a] = smoothRho(c.x[a]);
+    }
+    const List<vector2D> U0(c.U);
+    const scalarList rho0(c.rho);
+
+    c.apply();
+
+    scalar errU = 0, errU0 = 0, errRho = 0, errRho0 = 0;
+    forAll(c.x, a)
+    {
+        errU = max(errU, mag(c.U[a] - smoothU(c.x[a])));
+        errU0 = max(errU0, mag(U0[a] - smoothU(c.x[a])));
+        errRho = max(errRho, mag(c.rho[a] - smoothRho(c.x[a])));
+        errRho0 = max(errRho0, mag(rho0[a] - smoothRho(c.x[a])));
+    }
+    Info<< "U off the field " << errU0 << " -> " << errU << ", rho "
+        << errRho0 << " -> " << errRho << endl;
+    EXPECT_GT(errU0, 0.02) << "the shift moved nothing worth correcting";
+    EXPECT_LT(errU, 0.5*errU0);
+    EXPECT_GT(errRho0, 0.02);
+    EXPECT_LT(errRho, 0.5*errRho0);
+}
+
+
+TEST(wcsphShifting, aPeakAmongItsNeighboursIsNotRaised)
+{
+    sphTest::throwOnFatal();
+    latticeCase c;
+    const label a = latticeCase::site(10, 10);
+    // Off its site, so G{1} moves it back
+    const vector2D start(c.x[a] + vector2D(0.2*dr, 0.1*dr));
+    c.x[a] = start;
+    c.U = vector2D::zero;
+    c.U[a] = vector2D(10, -4);
+    c.rho[a] = 1010;
+
+    c.apply();
+
+    EXPECT_GT(mag(c.x[a] - start), 0.05*dr) << "the particle was not shifted";
+    // Unbounded, (38) makes it faster and denser, its neighbours' values
+    // of the wrong sign
+    forAll(c.x, i)
+    {
+        EXPECT_GE(c.U[i].x(), 0) << "particle " << i;
+        EXPECT_LE(c.U[i].x(), 10) << "particle " << i;
+        EXPECT_GE(c.U[i].y(), -4) << "particle " << i;
+        EXPECT_LE(c.U[i].y(), 0) << "particle " << i;
+        EXPECT_GE(c.rho[i], 1000) << "particle " << i;
+        EXPECT_LE(c.rho[i], 1010) << "particle " << i;
+    }
 }
 
 

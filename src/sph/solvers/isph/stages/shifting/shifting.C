@@ -5,35 +5,9 @@
 #include "shifting.H"
 #include "usawOperators.H"
 #include "kernelDispatch.H"
+#include "neighbourRange.H"
 
 #include <cmath>
-
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-template<class Type>
-void Foam::SPH::shifting::neighbourRange
-(
-    const UList<Type>& f,
-    List<Type>& fMin,
-    List<Type>& fMax
-) const
-{
-    const isphWork& w = work_;
-    const label* off = w.nbrs.offsets().cdata();
-    const label* nbr = w.nbrs.indices().cdata();
-    for (label i = 0; i < w.nFluid; ++i)
-    {
-        Type lo = f[i], hi = f[i];
-        for (label j = off[i]; j < off[i + 1]; ++j)
-        {
-            lo = min(lo, f[nbr[j]]);
-            hi = max(hi, f[nbr[j]]);
-        }
-        fMin[i] = lo;
-        fMax[i] = hi;
-    }
-}
-
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -47,7 +21,7 @@ void Foam::SPH::shifting::execute(const scalar dt)
         usaw::gradMinus(K, w.nbrs, w.usaw, w.V, U, gradU_);
     });
 
-    neighbourRange(U, uMin_, uMax_);
+    neighbourRange(w.nbrs, w.nFluid, U, uMin_, uMax_);
 
     const scalar coeff = coeff_*sqr(w.W.h());
     const label* nearSurface = w.nearSurface.cdata();
@@ -72,7 +46,7 @@ void Foam::SPH::shifting::execute(const scalar dt)
         {
             usaw::gradMinus(K, w.nbrs, w.usaw, w.V, f, gradF_);
         });
-        neighbourRange(f, fMin_, fMax_);
+        neighbourRange(w.nbrs, w.nFluid, f, fMin_, fMax_);
         for (label i = 0; i < w.nFluid; ++i)
         {
             if (nearSurface[i]) continue;

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fickianShift.H"
+#include "neighbourRange.H"
 
 #include <cmath>
 
@@ -38,16 +39,19 @@ Foam::scalar Foam::SPH::fickianShift::apply
     if (correctRho)
     {
         usaw::gradMinus(K, nbrs, walls, V, rho, gradRho_);
+        neighbourRange(nbrs, nFluid, rho, rhoMin_, rhoMax_);
     }
+    neighbourRange(nbrs, nFluid, U, uMin_, uMax_);
 
     scalar maxShift2 = 0;
     for (label i = 0; i < nFluid; ++i)
     {
         const vector2D delta(-D[i]*gradC_[i]);
-        U[i] += delta & gradU_[i];
+        U[i] = min(max(U[i] + (delta & gradU_[i]), uMin_[i]), uMax_[i]);
         if (correctRho)
         {
-            rho[i] += delta & gradRho_[i];
+            const scalar corrected = rho[i] + (delta & gradRho_[i]);
+            rho[i] = min(max(corrected, rhoMin_[i]), rhoMax_[i]);
         }
         x[i] = dom.wrap(x[i] + delta);
         maxShift2 = max(maxShift2, magSqr(delta));

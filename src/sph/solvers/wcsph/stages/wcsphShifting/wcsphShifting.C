@@ -7,6 +7,7 @@
 #include "kernelDispatch.H"
 #include "freeSurfaceRegion.H"
 #include "spreadLimit.H"
+#include "neighbourRange.H"
 
 #include <cmath>
 
@@ -255,9 +256,11 @@ void Foam::SPH::wcsphShifting::correctScalars()
         {
             usaw::gradMinus(K, work_.nbrs, *walls_, V_, f, gradF_);
         });
+        neighbourRange(work_.nbrs, work_.nFluid, f, fMin_, fMax_);
         for (label i = 0; i < work_.nFluid; ++i)
         {
-            f[i] += -D_[i]*gradC[i] & gradF_[i];
+            const scalar corrected = f[i] + (-D_[i]*gradC[i] & gradF_[i]);
+            f[i] = min(max(corrected, fMin_[i]), fMax_[i]);
         }
     }
 }
