@@ -9,6 +9,37 @@
 #include "kernelDispatch.H"
 #include "ghostSurface.H"
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The p solver's entries. With a free surface a BoomerAMG hierarchy is
+//  rebuilt at every step (reuse 1) unless the case gives reuse: the surface
+//  rows change from step to step, and a hierarchy kept for BoomerAMG's
+//  default 10 solves doubled the CPU of the obstacle dam-break at 2 mm
+//  (benchmarks/README.md, "A free surface")
+Foam::dictionary pSolverDict
+(
+    const Foam::dictionary& solution,
+    const bool freeSurface
+)
+{
+    Foam::dictionary dict(solution.subDict("solvers").subDict("p"));
+    if
+    (
+        freeSurface && !dict.found("reuse")
+     && dict.getOrDefault<Foam::word>("preconditioner", "none") == "BoomerAMG"
+    )
+    {
+        dict.add("reuse", Foam::label(1));
+    }
+    return dict;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class Kernel>
@@ -272,7 +303,7 @@ Foam::SPH::pressurePoisson::pressurePoisson
     runTime_(runTime),
     ownGradient_(ownGradient),
     freeSurface_(freeSurface),
-    solver_(linearSolver::New("p", solution.subDict("solvers").subDict("p"))),
+    solver_(linearSolver::New("p", pSolverDict(solution, freeSurface))),
     stopIfNotConverged_(true),
     diagonalReinforcement_(1e-6),
     pRefValue_(0),
