@@ -240,6 +240,8 @@ TEST(wcsphBounds, badEntriesNameTheFileAndEntry)
         {"onMachExceeded sometimes;", "warn"},
         {"maxStepDisplacement 0;", "maxStepDisplacement"},
         {"maxSpread -1;", "maxSpread"},
+        {"wallBounceElasticity 1.5;", "wallBounceElasticity"},
+        {"wallBounceElasticity -0.1;", "wallBounceElasticity"},
     };
     for (const auto& c : cases)
     {

@@ -180,6 +180,43 @@ TEST(wcsphFoam, particleLeavingTheDomainStopsWithTheLastGoodStateWritten)
 }
 
 
+TEST(wcsphFoam, aBounceGivesBackTheNormalVelocityTheCaseSays)
+{
+    // A 300 m/s fall: the floor row crosses the wall at the third step
+    // and is bounced; wallBounceElasticity e turns its normal velocity
+    // into -e times it (bounds opened wide so that nothing else stops it)
+    scalar fastestUp[2];
+    const scalar elasticity[2] = {1, 0};
+    for (label k = 0; k < 2; ++k)
+    {
+        const fileName dir = tankCase("wcsphBounceE" + Foam::name(k), 0.05, "0.00012");
+        std::string out;
+        run("sed -i 's/^internalField .*/internalField uniform (0 -300 0);/' " + dir/"0"/"U"
+            + " && echo 'densityBounds (0 1e6); maxStepDisplacement 100; maxMach 1e6;"
+              " wallBounceElasticity " + Foam::name(elasticity[k]) + ";' >> "
+            + dir/"system"/"sphSchemes"
+            + " && sed -i 's/^writeControl .*/writeControl timeStep;/;"
+              " s/^writeInterval .*/writeInterval 3;/' " + dir/"system"/"controlDict"
+            + " && echo 'logInterval 1;' >> " + dir/"system"/"controlDict", out);
+        ASSERT_EQ(run(bin + "wcsphFoam -case " + dir, out), 0) << out;
+        EXPECT_NE(out.find("their normal velocity times -" + Foam::name(elasticity[k])),
+            std::string::npos) << out;
+        EXPECT_NE(out.find("Wall bounces since the last report: 20"), std::string::npos) << out;
+
+        const state s = readState(dir, "0.00012");
+        fastestUp[k] = -GREAT;
+        forAll(s.U, i)
+        {
+            if (s.type[i] == 0) fastestUp[k] = max(fastestUp[k], s.U[i].y());
+        }
+    }
+    // Elastic: the floor row goes up about as fast as it fell; inelastic:
+    // it keeps what the step's pressure gives it, far less
+    EXPECT_GT(fastestUp[0], 200) << fastestUp[1];
+    EXPECT_LT(fastestUp[1], 0.25*fastestUp[0]);
+}
+
+
 TEST(wcsphFoam, missingSoundSpeedIsAClearError)
 {
     const fileName dir = tankCase("wcsphNoC0", 0.05, "0.01");

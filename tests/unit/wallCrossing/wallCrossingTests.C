@@ -3,7 +3,8 @@
 -------------------------------------------------------------------------------
 Description
     wallCrossing: a move through a wall is mirrored back with its normal
-    velocity reversed, a move inside the fluid is left alone; in a channel
+    velocity reversed (times the elasticity: 0 leaves the velocity along
+    the wall only), a move inside the fluid is left alone; in a channel
     periodic in x (walls joined through the seam, an obstacle in the
     middle) a particle crossing the seam is not a wall crossing, whether
     its new position is given wrapped or not, while a wall crossed next to
@@ -62,6 +63,16 @@ namespace
         return n;
     }
 
+    //- The walls of the box [0, 1]^2
+    SPH::wallMesh unitTank()
+    {
+        return makeWalls
+        (
+            "tank { type box; min (0 0); max (1 1); }",
+            SPH::domain(vector2D(0, 0), vector2D(1, 1))
+        );
+    }
+
     //- The channel x in [0, 1) periodic, walls at y = 0 and 1, an
     //- obstacle (0.4, 0.4)-(0.6, 0.6) in the middle
     const SPH::domain channel(vector2D(0, 0), vector2D(1, 1), {true, false});
@@ -74,14 +85,7 @@ namespace
 
 TEST(wallCrossing, aMoveThroughAWallIsMirroredBack)
 {
-    const SPH::wallMesh walls
-    (
-        makeWalls
-        (
-            "tank { type box; min (0 0); max (1 1); }",
-            SPH::domain(vector2D(0, 0), vector2D(1, 1))
-        )
-    );
+    const SPH::wallMesh walls(unitTank());
     const SPH::wallCrossing wc(walls, 4*dr);
 
     vector2D x(0.5, -0.01), U(0.3, -2);
@@ -94,6 +98,30 @@ TEST(wallCrossing, aMoveThroughAWallIsMirroredBack)
     EXPECT_EQ(bounceOne(wc, vector2D(0.5, 0.3), y, V), 0);
     EXPECT_EQ(y, vector2D(0.52, 0.3));
     EXPECT_EQ(V, vector2D(1, 1));
+}
+
+
+TEST(wallCrossing, anInelasticBounceKeepsOnlyTheVelocityAlongTheWall)
+{
+    const SPH::wallMesh walls(unitTank());
+    const SPH::wallCrossing wc(walls, 4*dr);
+
+    // Through the floor: the position is mirrored as in an elastic bounce
+    List<vector2D> x0(1, vector2D(0.5, 0.02)), x(1, vector2D(0.5, -0.01));
+    List<vector2D> U(1, vector2D(0.3, -2));
+    EXPECT_EQ(wc.bounce(x0, x, U, 1, 0), 1);
+    EXPECT_NEAR(x[0].y(), 0.01, tol);
+    EXPECT_NEAR(U[0].x(), 0.3, tol);
+    EXPECT_NEAR(U[0].y(), 0, tol);
+
+    // Half the normal speed back through the right wall
+    x0[0] = vector2D(0.99, 0.5);
+    x[0] = vector2D(1.02, 0.5);
+    U[0] = vector2D(4, -1);
+    EXPECT_EQ(wc.bounce(x0, x, U, 1, 0.5), 1);
+    EXPECT_NEAR(x[0].x(), 0.98, tol);
+    EXPECT_NEAR(U[0].x(), -2, tol);
+    EXPECT_NEAR(U[0].y(), -1, tol);
 }
 
 

@@ -168,7 +168,8 @@ Foam::label Foam::SPH::wallCrossing::bounce
     const UList<vector2D>& x0,
     UList<vector2D>& x,
     UList<vector2D>& U,
-    const label n
+    const label n,
+    const scalar elasticity
 ) const
 {
     label nBounced = 0;
@@ -181,7 +182,7 @@ Foam::label Foam::SPH::wallCrossing::bounce
         label s = firstCrossing(x0[i], x[i], t);
         if (s < 0) continue;
 
-        // Mirror in the wall line and reverse the normal velocity; in a
+        // Mirror in the wall line and turn the normal velocity; in a
         // corner the mirror image can be behind the other wall, so test the
         // move again (twice at most), else stay where the step started
         for (label bounces = 0; s >= 0; ++bounces)
@@ -200,7 +201,7 @@ Foam::label Foam::SPH::wallCrossing::bounce
             const scalar un = U[i] & nrm;
             if (un < 0)
             {
-                U[i] -= 2*un*nrm;
+                U[i] -= (1 + elasticity)*un*nrm;
             }
             s = firstCrossing(x0[i], x[i], t);
         }

@@ -133,6 +133,7 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     nListBuilds_(0),
     nListRefreshes_(0),
     fresh_(false),
+    bounceElasticity_(1),
     nBounced_(0),
     minWallDistance_(0),
     nHeld_(0),
@@ -186,6 +187,11 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
     )
     {
         crossing_.reset(new wallCrossing(*walls_, kernel_->support()));
+        bounceElasticity_ = checkedScalar
+        (
+            schemes_, "wallBounceElasticity", 1, {0, 1},
+            "of the normal velocity a wall bounce gives back (1: elastic)"
+        );
     }
     // Before the stage list prints gravity, after the step's own stages
     autoPtr<wcsphBodyForces> forces
@@ -254,8 +260,11 @@ void Foam::SPH::wcsph::addStages()
             new memberStage<wcsph>
             (
                 "wallBounce", {"positions", "U"}, {"positions", "U"},
-                "particles that cross a wall in a step bounce back (a safety"
-                " net; counted in the log)", *this, &wcsph::wallBounce
+                "particles that cross a wall in a step are mirrored back,"
+                " their normal velocity times -"
+              + std::string(Foam::name(bounceElasticity_))
+              + " (a safety net; counted in the log)", *this,
+                &wcsph::wallBounce
             )
         );
     }

@@ -186,7 +186,8 @@ void Foam::SPH::wcsph::wallBounce(const scalar dt)
 {
     nBounced_ += crossing_->bounce
     (
-        x0_, parts_.positions(), parts_.field<vector2D>("U"), work_.nFluid
+        x0_, parts_.positions(), parts_.field<vector2D>("U"), work_.nFluid,
+        bounceElasticity_
     );
 }
 
