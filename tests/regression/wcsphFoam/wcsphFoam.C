@@ -217,6 +217,18 @@ TEST(wcsphFoam, aBounceGivesBackTheNormalVelocityTheCaseSays)
 }
 
 
+TEST(wcsphFoam, bounceElasticityWithoutABounceIsRefused)
+{
+    const fileName dir = tankCase("wcsphElasticityNoBounce", 0.05, "0.01");
+    std::string out;
+    run("echo 'wallBounce no; wallBounceElasticity 0.5;' >> " + dir/"system"/"sphSchemes", out);
+    EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 1);
+    EXPECT_NE(out.find("Entry wallBounceElasticity: only with wallBounce yes"),
+        std::string::npos) << out;
+    EXPECT_NE(out.find("system/sphSchemes"), std::string::npos) << out;
+}
+
+
 TEST(wcsphFoam, missingSoundSpeedIsAClearError)
 {
     const fileName dir = tankCase("wcsphNoC0", 0.05, "0.01");

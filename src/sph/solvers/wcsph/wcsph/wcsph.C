@@ -193,6 +193,13 @@ Foam::SPH::wcsph::wcsph(Time& runTime)
             "of the normal velocity a wall bounce gives back (1: elastic)"
         );
     }
+    else if (schemes_.found("wallBounceElasticity"))
+    {
+        FatalIOErrorInFunction(schemes_.lookup("wallBounceElasticity"))
+            << "Entry wallBounceElasticity: only with wallBounce yes and walls"
+            << " that do not move (no wall bounce runs in this case)"
+            << exit(FatalIOError);
+    }
     // Before the stage list prints gravity, after the step's own stages
     autoPtr<wcsphBodyForces> forces
     (
