@@ -13,6 +13,8 @@
 #include "implicitViscousPrediction.H"
 #include "renormalisation.H"
 #include "freeSurface.H"
+#include "airPockets.H"
+#include "airPocketCoupling.H"
 #include "pressurePoisson.H"
 #include "projection.H"
 #include "shifting.H"
@@ -208,10 +210,21 @@ void Foam::SPH::isph::addStages()
     }
     addPrediction(gradient);
     if (freeSurface_) stages_.add(new freeSurface(w, divRMax));
-    pressure_ = &stages_.add
+    autoPtr<airPockets> newPockets
+    (
+        airPockets::New(w, runTime_, dr_, freeSurface_, moving)
+    );
+    airPockets* pockets =
+        newPockets ? &stages_.add(newPockets.ptr()) : nullptr;
+    pressurePoisson& pressure = stages_.add
     (
         new pressurePoisson(w, runTime_, solution_, renormalised, freeSurface_)
     );
+    pressure_ = &pressure;
+    if (pockets && w.ghostSurface)
+    {
+        stages_.add(new airPocketCoupling(w, *pockets, pressure, gradient));
+    }
     stages_.add(new projection(w, gradient));
     if (thermal_) addHeatTransfer();
     stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (34)"));

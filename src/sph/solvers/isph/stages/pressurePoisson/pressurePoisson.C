@@ -142,6 +142,15 @@ void Foam::SPH::pressurePoisson::setSources(const Kernel& K, const scalar dt)
     {
         f[i] = g & x[i];
     }
+    if (w.airPressure)
+    {
+        // A surface row bordering a pocket: p = pAir, A = pAir - rho g.x
+        const scalarField& pAir = *w.airPressure;
+        for (label i = 0; i < w.nFluid; ++i)
+        {
+            f[i] -= pAir[i]/w.rho0;
+        }
+    }
 }
 
 
@@ -181,6 +190,11 @@ void Foam::SPH::pressurePoisson::ghostRows(const Kernel& K, const scalar dt)
         }
         ghostSp_[i] = -M/delta;
         source_[i] += w.rho0*((w.g & x[i]) + delta*(w.g & n))*M/delta;
+        if (w.airPressure)
+        {
+            // The ghosts fall to the pocket's pressure on the surface line
+            source_[i] -= (*w.airPressure)[i]*M/delta;
+        }
         if (w.compaction > 0)
         {
             source_[i] +=

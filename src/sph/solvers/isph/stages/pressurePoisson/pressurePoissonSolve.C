@@ -194,7 +194,8 @@ Foam::label Foam::SPH::pressurePoisson::holdAtPMin()
 
         // A = s f with s = -rho: p = pMin, or 0
         kind[i] = laplacianMatrix::dirichlet;
-        f[i] = (w.g & x[i]) - (surfaceRow ? scalar(0) : pMin_)/w.rho0;
+        const scalar pAir = w.airPressure ? (*w.airPressure)[i] : 0;
+        f[i] = (w.g & x[i]) - (surfaceRow ? pAir : pMin_)/w.rho0;
         if (surfaceRow)
         {
             w.surfaceNormal[i] = Zero;
@@ -236,6 +237,46 @@ void Foam::SPH::pressurePoisson::solve()
             " solvers.p; ISPH { stopIfNotConverged no; } accepts it)"
         );
     }
+}
+
+
+Foam::label Foam::SPH::pressurePoisson::pocketResponse
+(
+    const labelUList& pocketOf,
+    const label k,
+    scalarField& phi
+)
+{
+    // Rows' right-hand sides are linear in the surface values: a Dirichlet
+    // row's is its value, a ghost row's source S holds -pAir M/delta
+    // (ghostRows), pAir times its implicit source Sp = -M/delta, and an
+    // equation row's right-hand side is -S
+    const label n = work_.parts.size();
+    const labelList& kind = laplacian_.kinds();
+    vectorN b(vectorN::Zero(n));
+    vectorN x(vectorN::Zero(n));
+    forAll(pocketOf, i)
+    {
+        if (pocketOf[i] != k) continue;
+        if (kind[i] == laplacianMatrix::dirichlet)
+        {
+            b[i] = 1;
+        }
+        else if (ghostSp_.size() && kind[i] == laplacianMatrix::interior)
+        {
+            b[i] = -ghostSp_[i];
+        }
+    }
+    const scalar cpuStart = processCpuSeconds();
+    const solverPerformance perf = solver_->solve(laplacian_.matrix(), b, x);
+    solveCpuSeconds_ += processCpuSeconds() - cpuStart;
+    nIterations_ += perf.nIterations();
+    phi.setSize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        phi[i] = x[i];
+    }
+    return perf.nIterations();
 }
 
 

@@ -101,7 +101,8 @@ Foam::vector2D Foam::SPH::projection::ghostGradient
     const tensor2D Tg(w.latticeMoment - ghostSurface::neighbourMoment(K, w, a));
     const vector2D& n = w.surfaceNormal[a];
     const scalar t = n & (Tg & n);
-    const scalar pByDelta = p[a]/w.surfaceDistance;
+    const scalar pSurface = w.airPressure ? (*w.airPressure)[a] : 0;
+    const scalar pByDelta = (p[a] - pSurface)/w.surfaceDistance;
     const tensor2D GrAlongN(Gr - t*(n*n));
     if (det(GrAlongN) > 0.1*det(Gr - Tg))
     {
@@ -149,7 +150,18 @@ void Foam::SPH::projection::pressureGradient
     UList<vector2D>& gradP
 )
 {
-    const scalarField& p = w.parts.field<scalar>("p");
+    pressureGradient(w, form, w.parts.field<scalar>("p"), gradP);
+}
+
+
+void Foam::SPH::projection::pressureGradient
+(
+    const isphWork& w,
+    const gradientForm form,
+    const scalarField& p,
+    UList<vector2D>& gradP
+)
+{
     if (w.dynamicPressureGradient)
     {
         // G{A} + rho g, so that u** + dt (g - G{p}/rho) is u** - dt G{A}/rho
