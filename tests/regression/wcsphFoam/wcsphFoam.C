@@ -229,6 +229,19 @@ TEST(wcsphFoam, bounceElasticityWithoutABounceIsRefused)
 }
 
 
+TEST(wcsphFoam, airPocketsAreRefused)
+{
+    // isphFoam's enclosed-air model: wcsphFoam has no surface condition to
+    // carry it, so the dictionary is an error, not ignored
+    const fileName dir = tankCase("wcsphAirPockets", 0.05, "0.01");
+    std::string out;
+    run("printf '\\nairPockets { gamma 1.4; }\\n' >> " + dir/"constant"/"transportProperties", out);
+    EXPECT_EQ(run(bin + "wcsphFoam -case " + dir, out), 1);
+    EXPECT_NE(out.find("airPockets: only isphFoam"), std::string::npos) << out;
+    EXPECT_NE(out.find("transportProperties"), std::string::npos) << out;
+}
+
+
 TEST(wcsphFoam, missingSoundSpeedIsAClearError)
 {
     const fileName dir = tankCase("wcsphNoC0", 0.05, "0.01");

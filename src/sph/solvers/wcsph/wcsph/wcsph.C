@@ -40,6 +40,22 @@ void Foam::SPH::wcsph::readPhysics()
     work_.rho0 = fluid.rho0;
     work_.nu = fluid.nu;
     work_.g = fluid.g;
+
+    const IOdictionary transport
+    (
+        IOobject
+        (
+            "transportProperties", runTime_.constant(), runTime_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    if (transport.found("airPockets"))
+    {
+        FatalIOErrorInFunction(transport.subDict("airPockets"))
+            << "airPockets: only isphFoam keeps the pressure of enclosed air"
+            << " (wcsphFoam's free surface has no condition to carry it)"
+            << exit(FatalIOError);
+    }
 }
 
 
