@@ -45,6 +45,22 @@ namespace
         }
     }
 
+    const SPH::domain unitBox(vector2D(0, 0), vector2D(1, 1));
+
+    //- The grid over the unit box after find() on a block with a hole
+    SPH::airPocketGrid findBlock
+    (
+        const vector2D& lo, const vector2D& hi,
+        const vector2D& holeLo, const vector2D& holeHi
+    )
+    {
+        SPH::airPocketGrid grid(unitBox, dr, sqr(4*dr));
+        DynamicList<vector2D> x;
+        addBlock(x, lo, hi, holeLo, holeHi);
+        grid.find(x);
+        return grid;
+    }
+
     //- The four walls of the box [0, L]^2
     void closedBox
     (
@@ -70,11 +86,10 @@ TEST(airPocketGrid, aRingOfWaterEnclosesOnePocketOfItsHolesArea)
     // Water 0.1-0.5 m square with a 0.2 m hole: the rows round the hole sit
     // dr/2 outside its edge, so the surface lines dr/2 beyond them are the
     // edge and the air is 0.2^2
-    const SPH::domain dom(vector2D(0, 0), vector2D(1, 1));
-    SPH::airPocketGrid grid(dom, dr, sqr(4*dr));
-    DynamicList<vector2D> x;
-    addBlock(x, vector2D(0.1, 0.1), vector2D(0.5, 0.5), vector2D(0.2, 0.2), vector2D(0.4, 0.4));
-    grid.find(x);
+    const SPH::airPocketGrid grid
+    (
+        findBlock(vector2D(0.1, 0.1), vector2D(0.5, 0.5), vector2D(0.2, 0.2), vector2D(0.4, 0.4))
+    );
     ASSERT_EQ(grid.size(), 1);
     EXPECT_NEAR(grid.area(0), sqr(0.2), 0.03*sqr(0.2));
     EXPECT_EQ(grid.at(vector2D(0.3, 0.3)), 0);
@@ -85,11 +100,10 @@ TEST(airPocketGrid, aRingOfWaterEnclosesOnePocketOfItsHolesArea)
 
 TEST(airPocketGrid, aUOpenUpwardsEnclosesNone)
 {
-    const SPH::domain dom(vector2D(0, 0), vector2D(1, 1));
-    SPH::airPocketGrid grid(dom, dr, sqr(4*dr));
-    DynamicList<vector2D> x;
-    addBlock(x, vector2D(0.1, 0.1), vector2D(0.5, 0.5), vector2D(0.2, 0.2), vector2D(0.4, 0.6));
-    grid.find(x);
+    const SPH::airPocketGrid grid
+    (
+        findBlock(vector2D(0.1, 0.1), vector2D(0.5, 0.5), vector2D(0.2, 0.2), vector2D(0.4, 0.6))
+    );
     EXPECT_EQ(grid.size(), 0);
     EXPECT_EQ(grid.at(vector2D(0.3, 0.3)), label(SPH::airPocketGrid::atmosphere));
 }
@@ -97,8 +111,7 @@ TEST(airPocketGrid, aUOpenUpwardsEnclosesNone)
 
 TEST(airPocketGrid, aClosedTanksHeadspaceIsTheAtmosphereAndARingInItsWaterAPocket)
 {
-    const SPH::domain dom(vector2D(0, 0), vector2D(1, 1));
-    SPH::airPocketGrid grid(dom, dr, sqr(4*dr));
+    SPH::airPocketGrid grid(unitBox, dr, sqr(4*dr));
     closedBox(grid, 1);
     DynamicList<vector2D> x;
     addBlock(x, vector2D(0, 0), vector2D(1, 0.5), vector2D(0.3, 0.1), vector2D(0.5, 0.3));
@@ -120,8 +133,7 @@ TEST(airPocketGrid, aWalledObstaclesInsideIsNoPocket)
 {
     // A square of walls in open water: the water's distances reach into it,
     // but no fluid particle is inside
-    const SPH::domain dom(vector2D(0, 0), vector2D(1, 1));
-    SPH::airPocketGrid grid(dom, dr, sqr(4*dr));
+    SPH::airPocketGrid grid(unitBox, dr, sqr(4*dr));
     const List<vector2D> points
     ({
         vector2D(0.4, 0.2), vector2D(0.6, 0.2), vector2D(0.6, 0.4), vector2D(0.4, 0.4)
@@ -156,8 +168,7 @@ TEST(airPocketGrid, aRingAcrossAPeriodicSeamIsOnePocket)
 
 TEST(airPocketGrid, theGapsOfADisorderedLiquidAreNoPockets)
 {
-    const SPH::domain dom(vector2D(0, 0), vector2D(1, 1));
-    SPH::airPocketGrid grid(dom, dr, sqr(4*dr));
+    SPH::airPocketGrid grid(unitBox, dr, sqr(4*dr));
     DynamicList<vector2D> x;
     addBlock(x, vector2D(0.1, 0.1), vector2D(0.9, 0.6));
     Random rnd(7);
@@ -176,11 +187,10 @@ TEST(airPocketGrid, theGapsOfADisorderedLiquidAreNoPockets)
 
 TEST(airPocketGrid, aSurfaceParticleBordersThePocketItsNormalPointsInto)
 {
-    const SPH::domain dom(vector2D(0, 0), vector2D(1, 1));
-    SPH::airPocketGrid grid(dom, dr, sqr(4*dr));
-    DynamicList<vector2D> x;
-    addBlock(x, vector2D(0.1, 0.1), vector2D(0.5, 0.5), vector2D(0.2, 0.2), vector2D(0.4, 0.4));
-    grid.find(x);
+    const SPH::airPocketGrid grid
+    (
+        findBlock(vector2D(0.1, 0.1), vector2D(0.5, 0.5), vector2D(0.2, 0.2), vector2D(0.4, 0.4))
+    );
     ASSERT_EQ(grid.size(), 1);
     // The hole's top row (y = 0.405) faces down into it, the block's top
     // row (y = 0.495) up into the atmosphere
