@@ -49,7 +49,9 @@ Foam::SPH::airPocketCoupling::airPocketCoupling
     pockets_(pockets),
     pressure_(pressure),
     form_(form),
-    nSolves_(0)
+    nSolves_(0),
+    gradP_(work.parts.size()),
+    unit_(work.nFluid)
 {
     pockets.makeImplicit();
 }
@@ -65,49 +67,60 @@ void Foam::SPH::airPocketCoupling::describe(Ostream& os) const
 }
 
 
-void Foam::SPH::airPocketCoupling::execute(const scalar dt)
+Eigen::MatrixXd Foam::SPH::airPocketCoupling::responses(const scalar dt)
 {
+    // Per pocket k facing any particle: phi_k (one solve) and the pockets'
+    // dA/dt per unit rise of P_k, G(., k), with its surface value 1 on the
+    // rows facing k in the gradient's ghosts
     isphWork& w = work_;
+    const labelList& pocketOf = pockets_.pocketOf();
     const label nP = pockets_.size();
-    nSolves_ = 0;
-    if (nP == 0) return;
-
-    scalarField& p = w.parts.field<scalar>("p");
-    List<vector2D> gradP(p.size());
-    projection::pressureGradient(w, form_, gradP);
-    const scalarList rate0(areaRates(gradP, dt, false));
-
-    // Each pocket's response: its pressure and its neighbours' fluxes
-    PtrList<scalarField> phi(nP);
-    Eigen::MatrixXd G(nP, nP);
-    scalarField unit(w.nFluid);
-    const scalarField* pAir = w.airPressure;
+    Eigen::MatrixXd G(Eigen::MatrixXd::Zero(nP, nP));
     labelList nFacing(nP, Zero);
-    for (const label k : pockets_.pocketOf())
+    for (const label k : pocketOf)
     {
         if (k >= 0) ++nFacing[k];
     }
+    const scalarField* pAir = w.airPressure;
+    phi_.resize(max(phi_.size(), nP));
     nSolves_ = 0;
     for (label k = 0; k < nP; ++k)
     {
-        phi.set(k, new scalarField(p.size(), Zero));
-        G.col(k).setZero();
-        if (!nFacing[k]) continue;
-        pressure_.pocketResponse(pockets_.pocketOf(), k, phi[k]);
-        ++nSolves_;
-        forAll(unit, i)
+        if (!phi_.set(k)) phi_.set(k, new scalarField(w.parts.size()));
+        if (!nFacing[k])
         {
-            unit[i] = pockets_.pocketOf()[i] == k ? 1 : 0;
+            phi_[k] = Zero;
+            continue;
         }
-        w.airPressure = &unit;
-        projection::pressureGradient(w, form_, phi[k], gradP);
-        const scalarList rate(areaRates(gradP, dt, true));
+        pressure_.pocketResponse(pocketOf, k, phi_[k]);
+        ++nSolves_;
+        forAll(unit_, i)
+        {
+            unit_[i] = pocketOf[i] == k ? 1 : 0;
+        }
+        w.airPressure = &unit_;
+        projection::pressureGradient(w, form_, phi_[k], gradP_);
+        const scalarList rate(areaRates(gradP_, dt, true));
         for (label j = 0; j < nP; ++j)
         {
             G(j, k) = rate[j];
         }
     }
     w.airPressure = pAir;
+    return G;
+}
+
+
+void Foam::SPH::airPocketCoupling::execute(const scalar dt)
+{
+    const label nP = pockets_.size();
+    nSolves_ = 0;
+    if (nP == 0) return;
+
+    scalarField& p = work_.parts.field<scalar>("p");
+    projection::pressureGradient(work_, form_, gradP_);
+    const scalarList rate0(areaRates(gradP_, dt, false));
+    const Eigen::MatrixXd G(responses(dt));
 
     // (I - dt P' G) dP = dt P' F0
     Eigen::MatrixXd M(Eigen::MatrixXd::Identity(nP, nP));
@@ -129,9 +142,10 @@ void Foam::SPH::airPocketCoupling::execute(const scalar dt)
     {
         dP[k] = dPv(k);
         areaRate[k] = rateNew(k);
+        if (dP[k] == 0) continue;
         forAll(p, i)
         {
-            p[i] += dP[k]*phi[k][i];
+            p[i] += dP[k]*phi_[k][i];
         }
     }
     pockets_.correct(dP, areaRate, dt);

@@ -153,7 +153,8 @@ Foam::label Foam::SPH::airPocketGrid::labelRegions
 {
     // Compartments the fluid is in; the others (an obstacle's inside, the
     // outside of a closed tank) are solid, whatever the distances say
-    List<bool> flooded(compartmentOpen_.size(), false);
+    List<bool>& flooded = compartmentFlooded_;
+    flooded = false;
     for (const vector2D& x : fluid)
     {
         const label k = cellOf(x);
@@ -274,6 +275,28 @@ void Foam::SPH::airPocketGrid::addBandAndAreas()
 }
 
 
+Foam::vector2D Foam::SPH::airPocketGrid::cellsPerDirection
+(
+    const domain& dom,
+    const scalar dr
+)
+{
+    // Cells of about dr/2: a whole number of them over a period, two more
+    // on each side where the box is not periodic
+    const scalar c0 = 0.5*dr;
+    vector2D n;
+    for (direction d = 0; d < 2; ++d)
+    {
+        const scalar span = dom.max()[d] - dom.min()[d];
+        n[d] =
+            dom.periodic(d)
+          ? max(scalar(1), std::round(span/c0))
+          : std::ceil(span/c0) + 4;
+    }
+    return n;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::SPH::airPocketGrid::airPocketGrid
@@ -287,28 +310,19 @@ Foam::SPH::airPocketGrid::airPocketGrid
     dr_(dr),
     minArea_(minArea)
 {
-    const scalar c0 = 0.5*dr;
+    const vector2D n(cellsPerDirection(dom, dr));
     for (direction d = 0; d < 2; ++d)
     {
-        const scalar span = dom.max()[d] - dom.min()[d];
-        if (dom.periodic(d))
-        {
-            n_[d] = max(label(1), label(std::round(span/c0)));
-            c_[d] = span/n_[d];
-            origin_[d] = dom.min()[d];
-        }
-        else
-        {
-            n_[d] = label(std::ceil(span/c0)) + 4;
-            c_[d] = c0;
-            origin_[d] = dom.min()[d] - 2*c0;
-        }
+        n_[d] = label(n[d]);
+        c_[d] = dom.periodic(d) ? (dom.max()[d] - dom.min()[d])/n_[d] : 0.5*dr;
+        origin_[d] = dom.min()[d] - (dom.periodic(d) ? 0 : 2*c_[d]);
     }
     wall_.setSize(n_[0]*n_[1], false);
     dist_.setSize(wall_.size());
     label_.setSize(wall_.size());
     compartment_.setSize(wall_.size(), 0);
     compartmentOpen_.setSize(1, true);
+    compartmentFlooded_.setSize(1);
 }
 
 
@@ -345,6 +359,7 @@ void Foam::SPH::airPocketGrid::setWalls
         nCells, open, nullptr
     );
     compartmentOpen_.transfer(open);
+    compartmentFlooded_.setSize(compartmentOpen_.size());
 }
 
 

@@ -22,6 +22,26 @@ void Foam::SPH::airPockets::markWalls()
 }
 
 
+Foam::scalar Foam::SPH::airPockets::pressure
+(
+    const scalar A0,
+    const scalar A
+) const
+{
+    return pAtm_*(std::pow(A0/A, gamma_) - 1);
+}
+
+
+Foam::scalar Foam::SPH::airPockets::closedArea
+(
+    const scalar A,
+    const scalar p
+) const
+{
+    return A*std::pow(max(1 + p/pAtm_, SMALL), 1/gamma_);
+}
+
+
 void Foam::SPH::airPockets::trackPockets()
 {
     // Cells each last pocket shares with each new one, and with any air
@@ -74,18 +94,28 @@ void Foam::SPH::airPockets::trackPockets()
             matched[k] = true;
         }
     }
+    // The first step of a restart: the pressures written
+    const scalarList pRead(fromRestart_ ? restartPressures() : scalarList());
+    fromRestart_ = false;
     for (label k = 0; k < n; ++k)
     {
         if (matched[k]) continue;
-        const scalar p = nParents[k] ? pShared[k]/sharedCells[k] : 0;
+        const scalar p =
+            nParents[k] ? pShared[k]/sharedCells[k]
+          : pRead.size() ? pRead[k]
+          : 0;
         area[k] = grid_.area(k);
-        A0[k] = area[k]*std::pow(max(1 + p/pAtm_, SMALL), 1/gamma_);
-        matched[k] = nParents[k] > 0;
+        A0[k] = closedArea(area[k], p);
     }
     A0_.transfer(A0);
     area_.transfer(area);
     lastCells_ = cells;
-    matched_.transfer(matched);
+
+    p_.setSize(n);
+    forAll(p_, k)
+    {
+        p_[k] = pressure(A0_[k], area_[k]);
+    }
 }
 
 
@@ -100,24 +130,6 @@ void Foam::SPH::airPockets::borderPockets()
         if (!work_.surface[i] || grid_.size() == 0) continue;
         const vector2D n(normals ? work_.surfaceNormal[i] : vector2D::zero);
         pocketOf_[i] = grid_.borderedPocket(x[i], n);
-    }
-}
-
-
-void Foam::SPH::airPockets::setPressures()
-{
-    // The first step of a restart: A0 back from the pressures written
-    const scalarList pRead(fromRestart_ ? restartPressures() : scalarList());
-    fromRestart_ = false;
-    p_.setSize(grid_.size());
-    forAll(p_, k)
-    {
-        if (pRead.size() && !matched_[k])
-        {
-            A0_[k] =
-                area_[k]*std::pow(max(1 + pRead[k]/pAtm_, SMALL), 1/gamma_);
-        }
-        p_[k] = pAtm_*(std::pow(A0_[k]/area_[k], gamma_) - 1);
     }
 }
 
@@ -200,6 +212,7 @@ Foam::SPH::airPockets::airPockets
         fromRestart_ = fromRestart_ || pAir_[i] != 0;
     }
     markWalls();
+    work.airPressure = &pAir_;
 }
 
 
@@ -231,17 +244,8 @@ Foam::autoPtr<Foam::SPH::airPockets> Foam::SPH::airPockets::New
             << "airPockets in a flow without a free surface: there is no"
             << " air to close off" << exit(FatalIOError);
     }
-    const label nCells = label
-    (
-        min
-        (
-            scalar(labelMax/2),
-            (cmptMax(work.cloud.dom().max() - work.cloud.dom().min())/(0.5*dr)
-          + 4)*(cmptMin(work.cloud.dom().max() - work.cloud.dom().min())
-           /(0.5*dr) + 4)
-        )
-    );
-    if (nCells > 50000000)
+    const scalar nCells = airPocketGrid::nCells(work.cloud.dom(), dr);
+    if (nCells > 5e7)
     {
         FatalIOErrorInFunction(dict)
             << "airPockets: the pockets' grid of dr/2 cells over the domain"
@@ -267,11 +271,9 @@ void Foam::SPH::airPockets::execute(const scalar dt)
 {
     if (movingWalls_) markWalls();
     grid_.find(SubList<vector2D>(work_.parts.positions(), work_.nFluid));
-    trackPockets();
     borderPockets();
-    setPressures();
+    trackPockets();
     setSurfaceValues();
-    work_.airPressure = &pAir_;
 }
 
 
