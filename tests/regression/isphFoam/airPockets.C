@@ -21,6 +21,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "testCase.H"
+#include "restartCheck.H"
 
 #include <cmath>
 #include <fstream>
@@ -213,6 +214,35 @@ TEST(isphFoamAirPockets, withTheDirichletSurfaceThePressureIsTheAreasOfTheStepsS
     }
     EXPECT_EQ(lines.back().n, 1);
     EXPECT_GE(emptyHoleCells(dir), 8);
+}
+
+
+TEST(isphFoamAirPockets, aRestartGoesOnWithThePocketsAsTracked)
+{
+    // The pockets' A0, area, pressure and cells are in uniform/isphState:
+    // run to 0.1 s and run to 0.05 s restarted to 0.1 s give the same files
+    const fileName dir = holeTank("isphAirPocketRestart", "");
+    std::string out;
+    ASSERT_EQ
+    (
+        run("printf '\\nairPockets {}\\n' >> " + dir/"constant/transportProperties", out),
+        0
+    ) << out;
+    sphTest::expectExactRestart("isphFoam", dir, "0.1", "0.05", "Air pockets: 1");
+    const fileName state = dir/"0.1"/"uniform"/"isphState";
+    EXPECT_EQ(run("grep -q pocketCells " + state, out), 0);
+
+    // A state written for another grid is an error naming it
+    const fileName twice(dir + "Twice");
+    rmDir(twice/"0.1");
+    run
+    (
+        "sed -i 's/^\\( *gridCells *\\).*/\\17;/' "
+      + twice/"0.05"/"uniform"/"isphState", out
+    );
+    EXPECT_NE(run(bin + "isphFoam -case " + twice, out), 0) << out;
+    EXPECT_NE(out.find("isphState"), std::string::npos) << out;
+    EXPECT_NE(out.find("gridCells 7"), std::string::npos) << out;
 }
 
 

@@ -214,16 +214,15 @@ void Foam::SPH::isph::addStages()
     (
         airPockets::New(w, runTime_, dr_, freeSurface_, moving)
     );
-    airPockets* pockets =
-        newPockets ? &stages_.add(newPockets.ptr()) : nullptr;
+    pockets_ = newPockets ? &stages_.add(newPockets.ptr()) : nullptr;
     pressurePoisson& pressure = stages_.add
     (
         new pressurePoisson(w, runTime_, solution_, renormalised, freeSurface_)
     );
     pressure_ = &pressure;
-    if (pockets && w.ghostSurface)
+    if (pockets_ && w.ghostSurface)
     {
-        stages_.add(new airPocketCoupling(w, *pockets, pressure, gradient));
+        stages_.add(new airPocketCoupling(w, *pockets_, pressure, gradient));
     }
     stages_.add(new projection(w, gradient));
     if (thermal_) addHeatTransfer();
@@ -291,6 +290,7 @@ Foam::SPH::isph::isph(Time& runTime)
     fresh_(true),
     pressure_(nullptr),
     wallDistance_(nullptr),
+    pockets_(nullptr),
     maxSpeed_(0),
     maxAccel_(0),
     maxAccelStart_(0),
@@ -393,6 +393,7 @@ void Foam::SPH::isph::saveState(const particles::snapshot& start)
     UStart_ = &start.vectors["U"];
     maxAccelStart_ = maxAccel_;
     forces_.save();
+    if (pockets_) pockets_->save();
 }
 
 
@@ -400,6 +401,7 @@ void Foam::SPH::isph::restoreState()
 {
     maxAccel_ = maxAccelStart_;
     forces_.restore();
+    if (pockets_) pockets_->restore();
 }
 
 
@@ -431,12 +433,14 @@ void Foam::SPH::isph::afterStep(const scalar dt)
 void Foam::SPH::isph::readState(const dictionary& dict)
 {
     maxAccel_ = dict.getOrDefault<scalar>("maxAcceleration", 0);
+    if (pockets_) pockets_->readState(dict);
 }
 
 
 void Foam::SPH::isph::writeState(Ostream& os) const
 {
     os.writeEntry("maxAcceleration", maxAccel_);
+    if (pockets_) pockets_->writeState(os);
     forces_.write();
 }
 

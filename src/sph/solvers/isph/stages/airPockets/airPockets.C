@@ -47,10 +47,10 @@ void Foam::SPH::airPockets::trackPockets()
     // Cells each last pocket shares with each new one, and with any air
     const labelList& cells = grid_.cellLabels();
     std::map<std::pair<label, label>, label> shared;
-    labelList lastAir(A0_.size(), Zero);
+    labelList lastAir(now_.A0.size(), Zero);
     forAll(cells, k)
     {
-        const label o = lastCells_.size() ? lastCells_[k] : -1;
+        const label o = now_.cells.size() ? now_.cells[k] : -1;
         if (o < 0 || cells[k] == airPocketGrid::water) continue;
         if (cells[k] == airPocketGrid::solid) continue;
         ++lastAir[o];
@@ -62,7 +62,7 @@ void Foam::SPH::airPockets::trackPockets()
     // parts' pressure (weighted by the cells it took from each) and the
     // grid's area: shares of A0 would make its pressure jump
     const label n = grid_.size();
-    labelList nParents(n, Zero), nChildren(A0_.size(), Zero);
+    labelList nParents(n, Zero), nChildren(now_.A0.size(), Zero);
     scalarList sharedCells(n, Zero), pShared(n, Zero);
     for (const auto& s : shared)
     {
@@ -71,7 +71,7 @@ void Foam::SPH::airPockets::trackPockets()
         ++nParents[k];
         ++nChildren[o];
         sharedCells[k] += s.second;
-        pShared[k] += p_[o]*s.second;
+        pShared[k] += now_.p[o]*s.second;
     }
     scalarList A0(n), area(n);
     List<bool> matched(n, false);
@@ -81,8 +81,8 @@ void Foam::SPH::airPockets::trackPockets()
         const label k = s.first.second;
         if (nParents[k] == 1 && nChildren[o] == 1 && lastAir[o] == s.second)
         {
-            A0[k] = A0_[o];
-            area[k] = area_[o];
+            A0[k] = now_.A0[o];
+            area[k] = now_.area[o];
             if (implicit_)
             {
                 area[k] += relaxPerStep*(grid_.area(k) - area[k]);
@@ -107,14 +107,14 @@ void Foam::SPH::airPockets::trackPockets()
         area[k] = grid_.area(k);
         A0[k] = closedArea(area[k], p);
     }
-    A0_.transfer(A0);
-    area_.transfer(area);
-    lastCells_ = cells;
+    now_.A0.transfer(A0);
+    now_.area.transfer(area);
+    now_.cells = cells;
 
-    p_.setSize(n);
-    forAll(p_, k)
+    now_.p.setSize(n);
+    forAll(now_.p, k)
     {
-        p_[k] = pressure(A0_[k], area_[k]);
+        now_.p[k] = pressure(now_.A0[k], now_.area[k]);
     }
 }
 
@@ -159,7 +159,7 @@ void Foam::SPH::airPockets::setSurfaceValues()
 {
     for (label i = 0; i < work_.nFluid; ++i)
     {
-        pAir_[i] = pocketOf_[i] >= 0 ? p_[pocketOf_[i]] : 0;
+        pAir_[i] = pocketOf_[i] >= 0 ? now_.p[pocketOf_[i]] : 0;
     }
 }
 
@@ -284,27 +284,105 @@ void Foam::SPH::airPockets::correct
     const scalar dt
 )
 {
-    forAll(p_, k)
+    forAll(now_.p, k)
     {
-        p_[k] += dP[k];
-        area_[k] = max(area_[k] + dt*areaRate[k], SMALL*area_[k]);
+        now_.p[k] += dP[k];
+        now_.area[k] = max(now_.area[k] + dt*areaRate[k], SMALL*now_.area[k]);
     }
     setSurfaceValues();
 }
 
 
+void Foam::SPH::airPockets::writeState(Ostream& os) const
+{
+    // The cells as runs (first cell, cells, pocket): a pocket's cells
+    // are a few runs of the grid's rows, the grid a million cells
+    DynamicList<FixedList<label, 3>> runs;
+    const labelList& cells = now_.cells;
+    for (label k = 0; k < cells.size(); )
+    {
+        label end = k + 1;
+        while (end < cells.size() && cells[end] == cells[k]) ++end;
+        if (cells[k] >= 0)
+        {
+            runs.append(FixedList<label, 3>({k, end - k, cells[k]}));
+        }
+        k = end;
+    }
+    os.beginBlock("airPockets");
+    os.writeEntry("A0", now_.A0);
+    os.writeEntry("area", now_.area);
+    os.writeEntry("p", now_.p);
+    os.writeEntry("gridCells", grid_.cellLabels().size());
+    os.writeEntry("pocketCells", runs);
+    os.endBlock();
+}
+
+
+void Foam::SPH::airPockets::readState(const dictionary& state)
+{
+    const dictionary* dictPtr = state.findDict("airPockets");
+    if (!dictPtr) return;
+    const dictionary& dict = *dictPtr;
+    tracking read;
+    read.A0 = dict.get<scalarList>("A0");
+    read.area = dict.get<scalarList>("area");
+    read.p = dict.get<scalarList>("p");
+    const label nPockets = read.A0.size();
+    const label nCells = grid_.cellLabels().size();
+    if (read.area.size() != nPockets || read.p.size() != nPockets)
+    {
+        FatalIOErrorInFunction(dict)
+            << "airPockets: A0, area and p must have one value per pocket"
+            << " (" << nPockets << ", " << read.area.size() << ", "
+            << read.p.size() << ")" << exit(FatalIOError);
+    }
+    if (dict.get<label>("gridCells") != nCells)
+    {
+        FatalIOErrorInFunction(dict)
+            << "airPockets: gridCells " << dict.get<label>("gridCells")
+            << ", but this case's grid of dr/2 cells has " << nCells
+            << " (dr or the domain changed since the write)"
+            << exit(FatalIOError);
+    }
+    read.cells.setSize(nCells, -1);
+    const List<FixedList<label, 3>> runs
+    (
+        dict.get<List<FixedList<label, 3>>>("pocketCells")
+    );
+    for (const FixedList<label, 3>& run : runs)
+    {
+        if
+        (
+            run[0] < 0 || run[1] < 1 || run[0] + run[1] > nCells
+         || run[2] < 0 || run[2] >= nPockets
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "airPockets: pocketCells entry " << run << " is not"
+                << " (first cell, cells, pocket) within " << nCells
+                << " cells and " << nPockets << " pockets"
+                << exit(FatalIOError);
+        }
+        SubList<label>(read.cells, run[1], run[0]) = run[2];
+    }
+    now_ = std::move(read);
+    fromRestart_ = false;
+}
+
+
 void Foam::SPH::airPockets::printStep(Ostream& os) const
 {
-    if (p_.empty()) return;
+    if (now_.p.empty()) return;
     label largest = 0;
-    forAll(p_, k)
+    forAll(now_.p, k)
     {
-        if (area_[k] > area_[largest]) largest = k;
+        if (now_.area[k] > now_.area[largest]) largest = k;
     }
-    os  << "Air pockets: " << p_.size() << ", the largest "
-        << area_[largest] << " m^2 about " << grid_.centre(largest)
-        << " at p " << p_[largest]
-        << " Pa (closed at " << A0_[largest] << " m^2)" << nl;
+    os  << "Air pockets: " << now_.p.size() << ", the largest "
+        << now_.area[largest] << " m^2 about " << grid_.centre(largest)
+        << " at p " << now_.p[largest]
+        << " Pa (closed at " << now_.A0[largest] << " m^2)" << nl;
 }
 
 
