@@ -95,8 +95,11 @@ void Foam::SPH::airPockets::trackPockets()
         }
     }
     // The first step of a restart: the pressures written
-    const scalarList pRead(fromRestart_ ? restartPressures() : scalarList());
-    fromRestart_ = false;
+    const scalarList pRead
+    (
+        now_.pressuresFromFields ? restartPressures() : scalarList()
+    );
+    now_.pressuresFromFields = false;
     for (label k = 0; k < n; ++k)
     {
         if (matched[k]) continue;
@@ -204,12 +207,12 @@ Foam::SPH::airPockets::airPockets
     movingWalls_(movingWalls),
     pAir_(work.parts.field<scalar>("pAir")),
     pocketOf_(work.nFluid, -1),
-    fromRestart_(false),
     implicit_(false)
 {
     for (label i = 0; i < work.nFluid; ++i)
     {
-        fromRestart_ = fromRestart_ || pAir_[i] != 0;
+        now_.pressuresFromFields =
+            now_.pressuresFromFields || pAir_[i] != 0;
     }
     markWalls();
     work.airPressure = &pAir_;
@@ -367,7 +370,6 @@ void Foam::SPH::airPockets::readState(const dictionary& state)
         SubList<label>(read.cells, run[1], run[0]) = run[2];
     }
     now_ = std::move(read);
-    fromRestart_ = false;
 }
 
 
