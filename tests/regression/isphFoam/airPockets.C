@@ -230,7 +230,7 @@ TEST(isphFoamAirPockets, aRestartGoesOnWithThePocketsAsTracked)
     ) << out;
     sphTest::expectExactRestart("isphFoam", dir, "0.1", "0.05", "Air pockets: 1");
     const fileName state = dir/"0.1"/"uniform"/"isphState";
-    EXPECT_EQ(run("grep -q pocketCells " + state, out), 0);
+    EXPECT_EQ(run("grep -q airCells " + state, out), 0);
 
     // A state written for another grid is an error naming it
     const fileName twice(dir + "Twice");

@@ -123,6 +123,42 @@ TEST(spreadLimit, thinLayerIsNotChecked)
 }
 
 
+TEST(spreadLimit, kernelsHoldingParticlesThatFaceAnAirPocketDoNotCount)
+{
+    // isphFoam's airPockets marks the particles facing a pocket by their
+    // pAir: a kernel holding one has a surface in it (the pocket), whether
+    // or not its first moment shows it
+    sphTest::sphTank tank("spreadPocket");
+    spreadBlock(tank, 1.1);
+    label nBefore = 0;
+    const scalar before = spreadOf(tank, nBefore);
+
+    scalarField& pAir = tank.parts->add<scalar>("pAir");
+    pAir = 0;
+    label nZero = 0;
+    EXPECT_EQ(spreadOf(tank, nZero), before);
+    EXPECT_EQ(nZero, nBefore);
+
+    // Ten particles in the middle of the block face a pocket: the whole
+    // kernels that held them (about 50 each, overlapping) drop out
+    const vector2DField& x = tank.parts->positions();
+    label nMarked = 0;
+    for (label i = 0; i < tank.nFluid && nMarked < 10; ++i)
+    {
+        if (mag(x[i] - vector2D(0.5, 0.25)) < 0.05)
+        {
+            pAir[i] = 1500;
+            ++nMarked;
+        }
+    }
+    ASSERT_EQ(nMarked, 10);
+    label nAir = 0;
+    spreadOf(tank, nAir);
+    EXPECT_LT(nAir, nBefore - 40);
+    EXPECT_GT(nAir, 100);
+}
+
+
 TEST(spreadLimit, defaultAndBadEntries)
 {
     FatalError.throwExceptions();

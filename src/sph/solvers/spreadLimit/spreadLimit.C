@@ -17,6 +17,7 @@ Foam::scalar Foam::SPH::spreadLimit::fill
     const sphCloud& cloud,
     const Kernel& K,
     const scalar full,
+    const scalar* pAir,
     const label a
 )
 {
@@ -30,7 +31,10 @@ Foam::scalar Foam::SPH::spreadLimit::fill
         K.support(),
         [&](const label b, const vector2D& rab, const scalar r2)
         {
-            byWall = byWall || b >= nFluid;
+            // A particle that faces an air pocket (isphFoam's airPockets)
+            // is a surface, even one the moment misses (a film between
+            // two pockets): the pocket is room the fluid has
+            byWall = byWall || b >= nFluid || (pAir && pAir[b] != 0);
             const scalar w = K.W(std::sqrt(r2));
             sum += w;
             moment += w*rab;
@@ -38,6 +42,19 @@ Foam::scalar Foam::SPH::spreadLimit::fill
     );
     // A surface within the kernel tilts its first moment (a lattice's is 0)
     return wholeKernelFill(sum, moment, byWall, K.h(), sqr(cloud.dr())/full);
+}
+
+
+const Foam::scalar* Foam::SPH::spreadLimit::airPressure
+(
+    const sphCloud& cloud
+)
+{
+    const particles& parts = cloud.parts();
+    return
+        parts.found<scalar>("pAir")
+      ? parts.field<scalar>("pAir").cdata()
+      : nullptr;
 }
 
 
@@ -49,6 +66,7 @@ Foam::scalar Foam::SPH::spreadLimit::meanFill
 {
     const label nFluid = cloud.nFluid();
     const scalar full = cloud.W().latticeSum();
+    const scalar* pAir = airPressure(cloud);
     scalar total = 0;
     label n = 0;
     dispatch(cloud.W(), [&](const auto& K)
@@ -57,7 +75,7 @@ Foam::scalar Foam::SPH::spreadLimit::meanFill
             if(SPH::worthThreads(nFluid))
         for (label a = 0; a < nFluid; ++a)
         {
-            const scalar f = fill(cloud, K, full, a);
+            const scalar f = fill(cloud, K, full, pAir, a);
             if (f >= 0)
             {
                 total += f;
@@ -73,13 +91,14 @@ Foam::scalar Foam::SPH::spreadLimit::meanFill
 Foam::label Foam::SPH::spreadLimit::leastFilled(const sphCloud& cloud)
 {
     const scalar full = cloud.W().latticeSum();
+    const scalar* pAir = airPressure(cloud);
     label aLeast = -1;
     scalar least = VGREAT;
     dispatch(cloud.W(), [&](const auto& K)
     {
         for (label a = 0; a < cloud.nFluid(); ++a)
         {
-            const scalar f = fill(cloud, K, full, a);
+            const scalar f = fill(cloud, K, full, pAir, a);
             if (f >= 0 && f < least)
             {
                 least = f;

@@ -6,7 +6,6 @@
 #include "checkedEntry.H"
 #include "IOdictionary.H"
 #include "Time.H"
-#include <map>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -19,106 +18,6 @@ void Foam::SPH::airPockets::markWalls()
         work_.nFluid
     );
     grid_.setWalls(vertices, work_.cloud.walls().segments());
-}
-
-
-Foam::scalar Foam::SPH::airPockets::pressure
-(
-    const scalar A0,
-    const scalar A
-) const
-{
-    return pAtm_*(std::pow(A0/A, gamma_) - 1);
-}
-
-
-Foam::scalar Foam::SPH::airPockets::closedArea
-(
-    const scalar A,
-    const scalar p
-) const
-{
-    return A*std::pow(max(1 + p/pAtm_, SMALL), 1/gamma_);
-}
-
-
-void Foam::SPH::airPockets::trackPockets()
-{
-    // Cells each last pocket shares with each new one, and with any air
-    const labelList& cells = grid_.cellLabels();
-    std::map<std::pair<label, label>, label> shared;
-    labelList lastAir(now_.A0.size(), Zero);
-    forAll(cells, k)
-    {
-        const label o = now_.cells.size() ? now_.cells[k] : -1;
-        if (o < 0 || cells[k] == airPocketGrid::water) continue;
-        if (cells[k] == airPocketGrid::solid) continue;
-        ++lastAir[o];
-        if (cells[k] >= 0) ++shared[{o, cells[k]}];
-    }
-
-    // A pocket that is one last pocket (its only part) goes on with its
-    // A0 and area; one that merged, split or took part of one, with its
-    // parts' pressure (weighted by the cells it took from each) and the
-    // grid's area: shares of A0 would make its pressure jump
-    const label n = grid_.size();
-    labelList nParents(n, Zero), nChildren(now_.A0.size(), Zero);
-    scalarList sharedCells(n, Zero), pShared(n, Zero);
-    for (const auto& s : shared)
-    {
-        const label o = s.first.first;
-        const label k = s.first.second;
-        ++nParents[k];
-        ++nChildren[o];
-        sharedCells[k] += s.second;
-        pShared[k] += now_.p[o]*s.second;
-    }
-    scalarList A0(n), area(n);
-    List<bool> matched(n, false);
-    for (const auto& s : shared)
-    {
-        const label o = s.first.first;
-        const label k = s.first.second;
-        if (nParents[k] == 1 && nChildren[o] == 1 && lastAir[o] == s.second)
-        {
-            A0[k] = now_.A0[o];
-            area[k] = now_.area[o];
-            if (implicit_)
-            {
-                area[k] += relaxPerStep*(grid_.area(k) - area[k]);
-            }
-            else
-            {
-                area[k] = grid_.area(k);
-            }
-            matched[k] = true;
-        }
-    }
-    // The first step of a restart: the pressures written
-    const scalarList pRead
-    (
-        now_.pressuresFromFields ? restartPressures() : scalarList()
-    );
-    now_.pressuresFromFields = false;
-    for (label k = 0; k < n; ++k)
-    {
-        if (matched[k]) continue;
-        const scalar p =
-            nParents[k] ? pShared[k]/sharedCells[k]
-          : pRead.size() ? pRead[k]
-          : 0;
-        area[k] = grid_.area(k);
-        A0[k] = closedArea(area[k], p);
-    }
-    now_.A0.transfer(A0);
-    now_.area.transfer(area);
-    now_.cells = cells;
-
-    now_.p.setSize(n);
-    forAll(now_.p, k)
-    {
-        now_.p[k] = pressure(now_.A0[k], now_.area[k]);
-    }
 }
 
 
@@ -162,7 +61,7 @@ void Foam::SPH::airPockets::setSurfaceValues()
 {
     for (label i = 0; i < work_.nFluid; ++i)
     {
-        pAir_[i] = pocketOf_[i] >= 0 ? now_.p[pocketOf_[i]] : 0;
+        pAir_[i] = pocketOf_[i] >= 0 ? tracking_.p()[pocketOf_[i]] : 0;
     }
 }
 
@@ -207,12 +106,18 @@ Foam::SPH::airPockets::airPockets
     movingWalls_(movingWalls),
     pAir_(work.parts.field<scalar>("pAir")),
     pocketOf_(work.nFluid, -1),
+    tracking_(pAtm_, gamma_),
     implicit_(false)
 {
+    // Fields with pocket pressures and no tracking state yet (read after
+    // construction) are another run's: new pockets take their pressures
     for (label i = 0; i < work.nFluid; ++i)
     {
-        now_.pressuresFromFields =
-            now_.pressuresFromFields || pAir_[i] != 0;
+        if (pAir_[i] != 0)
+        {
+            tracking_.takePressuresFromFields();
+            break;
+        }
     }
     markWalls();
     work.airPressure = &pAir_;
@@ -275,7 +180,13 @@ void Foam::SPH::airPockets::execute(const scalar dt)
     if (movingWalls_) markWalls();
     grid_.find(SubList<vector2D>(work_.parts.positions(), work_.nFluid));
     borderPockets();
-    trackPockets();
+    tracking_.update
+    (
+        grid_.cellLabels(),
+        grid_.areas(),
+        implicit_ ? relaxPerStep : 1,
+        tracking_.pressuresFromFields() ? restartPressures() : scalarList()
+    );
     setSurfaceValues();
 }
 
@@ -287,104 +198,39 @@ void Foam::SPH::airPockets::correct
     const scalar dt
 )
 {
-    forAll(now_.p, k)
-    {
-        now_.p[k] += dP[k];
-        now_.area[k] = max(now_.area[k] + dt*areaRate[k], SMALL*now_.area[k]);
-    }
+    tracking_.correct(dP, areaRate, dt);
     setSurfaceValues();
 }
 
 
 void Foam::SPH::airPockets::writeState(Ostream& os) const
 {
-    // The cells as runs (first cell, cells, pocket): a pocket's cells
-    // are a few runs of the grid's rows, the grid a million cells
-    DynamicList<FixedList<label, 3>> runs;
-    const labelList& cells = now_.cells;
-    for (label k = 0; k < cells.size(); )
-    {
-        label end = k + 1;
-        while (end < cells.size() && cells[end] == cells[k]) ++end;
-        if (cells[k] >= 0)
-        {
-            runs.append(FixedList<label, 3>({k, end - k, cells[k]}));
-        }
-        k = end;
-    }
     os.beginBlock("airPockets");
-    os.writeEntry("A0", now_.A0);
-    os.writeEntry("area", now_.area);
-    os.writeEntry("p", now_.p);
-    os.writeEntry("gridCells", grid_.cellLabels().size());
-    os.writeEntry("pocketCells", runs);
+    tracking_.write(os, grid_.cellLabels().size());
     os.endBlock();
 }
 
 
 void Foam::SPH::airPockets::readState(const dictionary& state)
 {
-    const dictionary* dictPtr = state.findDict("airPockets");
-    if (!dictPtr) return;
-    const dictionary& dict = *dictPtr;
-    tracking read;
-    read.A0 = dict.get<scalarList>("A0");
-    read.area = dict.get<scalarList>("area");
-    read.p = dict.get<scalarList>("p");
-    const label nPockets = read.A0.size();
-    const label nCells = grid_.cellLabels().size();
-    if (read.area.size() != nPockets || read.p.size() != nPockets)
-    {
-        FatalIOErrorInFunction(dict)
-            << "airPockets: A0, area and p must have one value per pocket"
-            << " (" << nPockets << ", " << read.area.size() << ", "
-            << read.p.size() << ")" << exit(FatalIOError);
-    }
-    if (dict.get<label>("gridCells") != nCells)
-    {
-        FatalIOErrorInFunction(dict)
-            << "airPockets: gridCells " << dict.get<label>("gridCells")
-            << ", but this case's grid of dr/2 cells has " << nCells
-            << " (dr or the domain changed since the write)"
-            << exit(FatalIOError);
-    }
-    read.cells.setSize(nCells, -1);
-    const List<FixedList<label, 3>> runs
-    (
-        dict.get<List<FixedList<label, 3>>>("pocketCells")
-    );
-    for (const FixedList<label, 3>& run : runs)
-    {
-        if
-        (
-            run[0] < 0 || run[1] < 1 || run[0] + run[1] > nCells
-         || run[2] < 0 || run[2] >= nPockets
-        )
-        {
-            FatalIOErrorInFunction(dict)
-                << "airPockets: pocketCells entry " << run << " is not"
-                << " (first cell, cells, pocket) within " << nCells
-                << " cells and " << nPockets << " pockets"
-                << exit(FatalIOError);
-        }
-        SubList<label>(read.cells, run[1], run[0]) = run[2];
-    }
-    now_ = std::move(read);
+    const dictionary* dict = state.findDict("airPockets");
+    if (dict) tracking_.read(*dict, grid_.cellLabels().size());
 }
 
 
 void Foam::SPH::airPockets::printStep(Ostream& os) const
 {
-    if (now_.p.empty()) return;
+    const scalarList& A = tracking_.area();
+    if (A.empty()) return;
     label largest = 0;
-    forAll(now_.p, k)
+    forAll(A, k)
     {
-        if (now_.area[k] > now_.area[largest]) largest = k;
+        if (A[k] > A[largest]) largest = k;
     }
-    os  << "Air pockets: " << now_.p.size() << ", the largest "
-        << now_.area[largest] << " m^2 about " << grid_.centre(largest)
-        << " at p " << now_.p[largest]
-        << " Pa (closed at " << now_.A0[largest] << " m^2)" << nl;
+    os  << "Air pockets: " << A.size() << ", the largest "
+        << A[largest] << " m^2 about " << grid_.centre(largest)
+        << " at p " << tracking_.p()[largest]
+        << " Pa (closed at " << tracking_.A0()[largest] << " m^2)" << nl;
 }
 
 
