@@ -24,7 +24,7 @@ Foam::scalar Foam::SPH::spreadLimit::fill
     const label nFluid = cloud.nFluid();
     scalar sum = 0;
     vector2D moment(0, 0);
-    bool byWall = false;
+    bool byWallOrPocket = false;
     cloud.cells().forEachNeighbour
     (
         cloud.parts().positions()[a],
@@ -34,14 +34,18 @@ Foam::scalar Foam::SPH::spreadLimit::fill
             // A particle that faces an air pocket (isphFoam's airPockets)
             // is a surface, even one the moment misses (a film between
             // two pockets): the pocket is room the fluid has
-            byWall = byWall || b >= nFluid || (pAir && pAir[b] != 0);
+            byWallOrPocket =
+                byWallOrPocket || b >= nFluid || (pAir && pAir[b] != 0);
             const scalar w = K.W(std::sqrt(r2));
             sum += w;
             moment += w*rab;
         }
     );
     // A surface within the kernel tilts its first moment (a lattice's is 0)
-    return wholeKernelFill(sum, moment, byWall, K.h(), sqr(cloud.dr())/full);
+    return wholeKernelFill
+    (
+        sum, moment, byWallOrPocket, K.h(), sqr(cloud.dr())/full
+    );
 }
 
 
