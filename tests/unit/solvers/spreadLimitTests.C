@@ -13,7 +13,8 @@ Description
     - the block 5 % closer each way has a negative spread, which the
       summary at the end prints;
     - the kernels the walls' dummies reach and those the surface or the
-      block's side cuts do not count; fewer than ten whole kernels (a thin
+      block's side cuts do not count, nor those holding a particle the
+      method flags as a free surface; fewer than ten whole kernels (a thin
       layer) are not checked.
 
 \*---------------------------------------------------------------------------*/
@@ -123,23 +124,22 @@ TEST(spreadLimit, thinLayerIsNotChecked)
 }
 
 
-TEST(spreadLimit, kernelsHoldingParticlesThatFaceAnAirPocketDoNotCount)
+TEST(spreadLimit, kernelsHoldingFreeSurfaceParticlesDoNotCount)
 {
-    // isphFoam's airPockets marks the particles facing a pocket by their
-    // pAir: a kernel holding one has a surface in it (the pocket), whether
+    // isphFoam flags the particles it keeps at a free surface (p = 0 or an
+    // air pocket's pressure): a kernel holding one has air in it, whether
     // or not its first moment shows it
-    sphTest::sphTank tank("spreadPocket");
+    sphTest::sphTank tank("spreadSurface");
     spreadBlock(tank, 1.1);
     label nBefore = 0;
     const scalar before = spreadOf(tank, nBefore);
 
-    scalarField& pAir = tank.parts->add<scalar>("pAir");
-    pAir = 0;
-    label nZero = 0;
-    EXPECT_EQ(spreadOf(tank, nZero), before);
-    EXPECT_EQ(nZero, nBefore);
+    labelList surface(tank.parts->size(), Zero);
+    label nNone = 0;
+    EXPECT_EQ(SPH::spreadLimit::spread(*tank.cloud, nNone, &surface), before);
+    EXPECT_EQ(nNone, nBefore);
 
-    // Ten particles in the middle of the block face a pocket: the whole
+    // Ten particles round a void in the middle of the block: the whole
     // kernels that held them (about 50 each, overlapping) drop out
     const vector2DField& x = tank.parts->positions();
     label nMarked = 0;
@@ -147,15 +147,32 @@ TEST(spreadLimit, kernelsHoldingParticlesThatFaceAnAirPocketDoNotCount)
     {
         if (mag(x[i] - vector2D(0.5, 0.25)) < 0.05)
         {
-            pAir[i] = 1500;
+            surface[i] = 1;
             ++nMarked;
         }
     }
     ASSERT_EQ(nMarked, 10);
-    label nAir = 0;
-    spreadOf(tank, nAir);
-    EXPECT_LT(nAir, nBefore - 40);
-    EXPECT_GT(nAir, 100);
+    label nVoid = 0;
+    SPH::spreadLimit::spread(*tank.cloud, nVoid, &surface);
+    EXPECT_LT(nVoid, nBefore - 40);
+    EXPECT_GT(nVoid, 100);
+
+    // The check of a run reads the flags it was given: with every fluid
+    // particle at a surface no kernel is whole, and the spread that stops
+    // the unflagged check is not measured
+    string what;
+    const SPH::spreadLimit unflagged(sphTest::dict("maxSpread 0.2;"));
+    EXPECT_GE(unflagged.find(*tank.cloud, tank.parts->positions(), *tank.runTime, what), 0);
+    SubList<label>(surface, tank.nFluid) = 1;
+    const SPH::spreadLimit flagged(sphTest::dict("maxSpread 0.2;"), &surface);
+    EXPECT_EQ(flagged.find(*tank.cloud, tank.parts->positions(), *tank.runTime, what), -1);
+
+    // Flags of another size than the particles (some added or removed
+    // since the method set them) are not read
+    labelList stale(tank.parts->size() - 1, 1);
+    label nStale = 0;
+    EXPECT_EQ(SPH::spreadLimit::spread(*tank.cloud, nStale, &stale), before);
+    EXPECT_EQ(nStale, nBefore);
 }
 
 

@@ -17,25 +17,25 @@ Foam::scalar Foam::SPH::spreadLimit::fill
     const sphCloud& cloud,
     const Kernel& K,
     const scalar full,
-    const scalar* pAir,
+    const label* surface,
     const label a
 )
 {
     const label nFluid = cloud.nFluid();
     scalar sum = 0;
     vector2D moment(0, 0);
-    bool byWallOrPocket = false;
+    bool byWallOrSurface = false;
     cloud.cells().forEachNeighbour
     (
         cloud.parts().positions()[a],
         K.support(),
         [&](const label b, const vector2D& rab, const scalar r2)
         {
-            // A particle that faces an air pocket (isphFoam's airPockets)
-            // is a surface, even one the moment misses (a film between
-            // two pockets): the pocket is room the fluid has
-            byWallOrPocket =
-                byWallOrPocket || b >= nFluid || (pAir && pAir[b] != 0);
+            // A particle the method holds at the free surface bounds room
+            // the fluid has (air), even where the moment misses it: a film
+            // between two voids, a void smaller than the kernel
+            byWallOrSurface =
+                byWallOrSurface || b >= nFluid || (surface && surface[b]);
             const scalar w = K.W(std::sqrt(r2));
             sum += w;
             moment += w*rab;
@@ -44,20 +44,22 @@ Foam::scalar Foam::SPH::spreadLimit::fill
     // A surface within the kernel tilts its first moment (a lattice's is 0)
     return wholeKernelFill
     (
-        sum, moment, byWallOrPocket, K.h(), sqr(cloud.dr())/full
+        sum, moment, byWallOrSurface, K.h(), sqr(cloud.dr())/full
     );
 }
 
 
-const Foam::scalar* Foam::SPH::spreadLimit::airPressure
+const Foam::label* Foam::SPH::spreadLimit::flags
 (
-    const sphCloud& cloud
+    const sphCloud& cloud,
+    const labelList* surface
 )
 {
-    const particles& parts = cloud.parts();
+    // Flags of another size (particles added or removed since the method
+    // set them) say nothing of these particles
     return
-        parts.found<scalar>("pAir")
-      ? parts.field<scalar>("pAir").cdata()
+        surface && surface->size() == cloud.parts().size()
+      ? surface->cdata()
       : nullptr;
 }
 
@@ -65,12 +67,13 @@ const Foam::scalar* Foam::SPH::spreadLimit::airPressure
 Foam::scalar Foam::SPH::spreadLimit::meanFill
 (
     const sphCloud& cloud,
+    const labelList* surfaceFlags,
     label& nWhole
 )
 {
     const label nFluid = cloud.nFluid();
     const scalar full = cloud.W().latticeSum();
-    const scalar* pAir = airPressure(cloud);
+    const label* surface = flags(cloud, surfaceFlags);
     scalar total = 0;
     label n = 0;
     dispatch(cloud.W(), [&](const auto& K)
@@ -79,7 +82,7 @@ Foam::scalar Foam::SPH::spreadLimit::meanFill
             if(SPH::worthThreads(nFluid))
         for (label a = 0; a < nFluid; ++a)
         {
-            const scalar f = fill(cloud, K, full, pAir, a);
+            const scalar f = fill(cloud, K, full, surface, a);
             if (f >= 0)
             {
                 total += f;
@@ -92,17 +95,17 @@ Foam::scalar Foam::SPH::spreadLimit::meanFill
 }
 
 
-Foam::label Foam::SPH::spreadLimit::leastFilled(const sphCloud& cloud)
+Foam::label Foam::SPH::spreadLimit::leastFilled(const sphCloud& cloud) const
 {
     const scalar full = cloud.W().latticeSum();
-    const scalar* pAir = airPressure(cloud);
+    const label* surface = flags(cloud, surface_);
     label aLeast = -1;
     scalar least = VGREAT;
     dispatch(cloud.W(), [&](const auto& K)
     {
         for (label a = 0; a < cloud.nFluid(); ++a)
         {
-            const scalar f = fill(cloud, K, full, pAir, a);
+            const scalar f = fill(cloud, K, full, surface, a);
             if (f >= 0 && f < least)
             {
                 least = f;
@@ -116,7 +119,11 @@ Foam::label Foam::SPH::spreadLimit::leastFilled(const sphCloud& cloud)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::SPH::spreadLimit::spreadLimit(const dictionary& schemes)
+Foam::SPH::spreadLimit::spreadLimit
+(
+    const dictionary& schemes,
+    const labelList* surface
+)
 :
     fluidLimit
     (
@@ -127,6 +134,7 @@ Foam::SPH::spreadLimit::spreadLimit(const dictionary& schemes)
             " particles' volumes (1/mean kernel sum - 1)"
         )
     ),
+    surface_(surface),
     measuredIndex_(-1)
 {}
 
@@ -136,10 +144,11 @@ Foam::SPH::spreadLimit::spreadLimit(const dictionary& schemes)
 Foam::scalar Foam::SPH::spreadLimit::spread
 (
     const sphCloud& cloud,
-    label& nWhole
+    label& nWhole,
+    const labelList* surface
 )
 {
-    const scalar mean = meanFill(cloud, nWhole);
+    const scalar mean = meanFill(cloud, surface, nWhole);
     return nWhole < minWhole ? -1 : 1/mean - 1;
 }
 
@@ -164,7 +173,7 @@ Foam::label Foam::SPH::spreadLimit::find
     if (measuredIndex_ >= 0 && index < measuredIndex_ + interval) return -1;
     measuredIndex_ = index;
     label nWhole = 0;
-    const scalar s = spread(cloud, nWhole);
+    const scalar s = spread(cloud, nWhole, surface_);
     if (passes(s, runTime.value())) return -1;
 
     // A retried step (retryOnFailure) is measured again

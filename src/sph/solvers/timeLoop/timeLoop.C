@@ -53,7 +53,7 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     checkTimeControls(runTime);
     limits_.set(0, new stepDisplacement(schemes_));
     limits_.set(1, new speedLimit(schemes_));
-    limits_.set(2, new spreadLimit(schemes_));
+    limits_.set(2, new spreadLimit(schemes_, solver_.freeSurfaceFlags()));
     minDeltaTFraction_ = checkedScalar
     (
         schemes_, "minDeltaTFraction", minDeltaTFraction_, {0, 1, false, true},

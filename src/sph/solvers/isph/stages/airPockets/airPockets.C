@@ -78,22 +78,6 @@ Foam::SPH::airPockets::airPockets
 :
     stage("airPockets", {"positions", "freeSurface"}, {"pAir"}),
     work_(work),
-    pAtm_
-    (
-        checkedScalar
-        (
-            dict, "pAtm", 101325, {0, VGREAT, true},
-            "the air's absolute pressure at p = 0 [Pa]"
-        )
-    ),
-    gamma_
-    (
-        checkedScalar
-        (
-            dict, "gamma", 1.4, {1, 5},
-            "the exponent of p A^gamma (1.4 adiabatic, 1 isothermal)"
-        )
-    ),
     grid_
     (
         work.cloud.dom(), dr,
@@ -106,7 +90,19 @@ Foam::SPH::airPockets::airPockets
     movingWalls_(movingWalls),
     pAir_(work.parts.field<scalar>("pAir")),
     pocketOf_(work.nFluid, -1),
-    tracking_(pAtm_, gamma_),
+    tracking_
+    (
+        checkedScalar
+        (
+            dict, "pAtm", 101325, {0, VGREAT, true},
+            "the air's absolute pressure at p = 0 [Pa]"
+        ),
+        checkedScalar
+        (
+            dict, "gamma", 1.4, {1, 5},
+            "the exponent of p A^gamma (1.4 adiabatic, 1 isothermal)"
+        )
+    ),
     implicit_(false)
 {
     // Fields with pocket pressures and no tracking state yet (read after
@@ -170,7 +166,7 @@ Foam::autoPtr<Foam::SPH::airPockets> Foam::SPH::airPockets::New
 void Foam::SPH::airPockets::describe(Ostream& os) const
 {
     os  << "air closed off by the water keeps p = pAtm ((A0/A)^gamma - 1),"
-        << " pAtm " << pAtm_ << " Pa, gamma " << gamma_
+        << " pAtm " << tracking_.pAtm() << " Pa, gamma " << tracking_.gamma()
         << ", on the free surface it borders (airPockets; beyond 000_...)";
 }
 
