@@ -177,11 +177,10 @@ Foam::scalar Foam::SPH::timeLoop::nextDeltaT() const
 }
 
 
-Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
+Foam::label Foam::SPH::timeLoop::findNonFinite(string& what) const
 {
-    const sphCloud& cloud = solver_.cloud();
-    const particles& parts = cloud.parts();
-    const label nFluid = cloud.nFluid();
+    const particles& parts = solver_.cloud().parts();
+    const label nFluid = solver_.cloud().nFluid();
 
     auto finite = [](const vector2D& v)
     {
@@ -223,6 +222,16 @@ Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
             return bad;
         }
     }
+    return -1;
+}
+
+
+Foam::label Foam::SPH::timeLoop::findEscaped(string& what) const
+{
+    const sphCloud& cloud = solver_.cloud();
+    const particles& parts = cloud.parts();
+    const label nFluid = cloud.nFluid();
+    const vector2DField& x = parts.positions();
     for (label i = 0; i < nFluid; ++i)
     {
         if (!cloud.contains(x[i]))
@@ -239,7 +248,7 @@ Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
     const wallCrossing* crossing = solver_.crossing();
     if (crossing)
     {
-        List<vector2D> xEnd(SubList<vector2D>(parts.positions(), nFluid));
+        List<vector2D> xEnd(SubList<vector2D>(x, nFluid));
         List<vector2D> UEnd(SubList<vector2D>(parts.field<vector2D>("U"), nFluid));
         if (crossing->bounce(start_.positions, xEnd, UEnd, nFluid))
         {
@@ -253,12 +262,22 @@ Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
             }
         }
     }
+    return -1;
+}
+
+
+Foam::label Foam::SPH::timeLoop::findBadParticle(string& what) const
+{
+    label i = findNonFinite(what);
+    if (i >= 0) return i;
+    i = findEscaped(what);
+    if (i >= 0) return i;
 
     // A move no valid step makes, the case's bound on the speed, the fluid
     // spreading, then the method's physical bounds
     for (const fluidLimit& limit : limits_)
     {
-        const label i = limit.find(cloud, start_.positions, runTime_, what);
+        i = limit.find(solver_.cloud(), start_.positions, runTime_, what);
         if (i >= 0) return i;
     }
     return solver_.findUnphysical(what);
@@ -458,7 +477,7 @@ void Foam::SPH::timeLoop::prepareStart(Time& runTime, const word& stateName)
 }
 
 
-void Foam::SPH::timeLoop::run()
+void Foam::SPH::timeLoop::printHeader() const
 {
     Info<< solver_.title().c_str() << ", stages of each time step:" << nl;
     solver_.stages().print(Info);
@@ -485,6 +504,53 @@ void Foam::SPH::timeLoop::run()
             << " steps (particleSortInterval)" << nl;
     }
     Info<< endl;
+}
+
+
+void Foam::SPH::timeLoop::startStep(const bool adjustTimeStep)
+{
+    if (sortInterval_ > 0 && runTime_.timeIndex() % sortInterval_ == 0)
+    {
+        const scalar cpu0 = stage::processCpuSeconds();
+        solver_.sortParticles();
+        sortCpuSeconds_ += stage::processCpuSeconds() - cpu0;
+        ++nSorts_;
+    }
+    if (adjustTimeStep)
+    {
+        runTime_.setDeltaT(nextDeltaT());
+    }
+    timeStart_ = runTime_.value();
+    writeTimeIndexStart_ = timeClock::writeTimeIndex(runTime_);
+    ++runTime_;
+}
+
+
+void Foam::SPH::timeLoop::printSummary() const
+{
+    for (const fluidLimit& limit : limits_)
+    {
+        limit.printSummary(Info);
+    }
+    openSides_.printSummary(solver_.cloud(), Info);
+    if (maxRetries_ > 0)
+    {
+        Info<< "Steps retried with half the time step (retryOnFailure "
+            << maxRetries_ << "): " << nRetries_ << " retries, " << nRescued_
+            << " steps rescued" << nl;
+    }
+    if (sortInterval_ > 0)
+    {
+        Info<< "Fluid particles sorted by cell: " << nSorts_ << " times, "
+            << sortCpuSeconds_ << " s of CPU" << nl;
+    }
+    solver_.printTimes();
+}
+
+
+void Foam::SPH::timeLoop::run()
+{
+    printHeader();
 
     const bool adjustTimeStep =
         runTime_.controlDict().getOrDefault<bool>("adjustTimeStep", false);
@@ -500,20 +566,7 @@ void Foam::SPH::timeLoop::run()
 
     while (runTime_.run())
     {
-        if (sortInterval_ > 0 && runTime_.timeIndex() % sortInterval_ == 0)
-        {
-            const scalar cpu0 = stage::processCpuSeconds();
-            solver_.sortParticles();
-            sortCpuSeconds_ += stage::processCpuSeconds() - cpu0;
-            ++nSorts_;
-        }
-        if (adjustTimeStep)
-        {
-            runTime_.setDeltaT(nextDeltaT());
-        }
-        timeStart_ = runTime_.value();
-        writeTimeIndexStart_ = timeClock::writeTimeIndex(runTime_);
-        ++runTime_;
+        startStep(adjustTimeStep);
 
         const bool log =
             runTime_.timeIndex() % logInterval == 0 || runTime_.writeTime();
@@ -539,23 +592,7 @@ void Foam::SPH::timeLoop::run()
         }
     }
 
-    for (const fluidLimit& limit : limits_)
-    {
-        limit.printSummary(Info);
-    }
-    openSides_.printSummary(solver_.cloud(), Info);
-    if (maxRetries_ > 0)
-    {
-        Info<< "Steps retried with half the time step (retryOnFailure "
-            << maxRetries_ << "): " << nRetries_ << " retries, " << nRescued_
-            << " steps rescued" << nl;
-    }
-    if (sortInterval_ > 0)
-    {
-        Info<< "Fluid particles sorted by cell: " << nSorts_ << " times, "
-            << sortCpuSeconds_ << " s of CPU" << nl;
-    }
-    solver_.printTimes();
+    printSummary();
     Info<< "End" << nl << endl;
 }
 

@@ -135,6 +135,85 @@ void Foam::SPH::isph::addPrediction(const projection::gradientForm gradient)
 }
 
 
+Foam::scalar Foam::SPH::isph::readFreeSurfaceDivR() const
+{
+    // Section 3.2: "D{r} <= 1.5 in 2-D"
+    const scalar divRMax = schemes_.getOrDefault<scalar>("freeSurfaceDivR", 1.5);
+    if (!(divRMax > 0 && divRMax < 2))
+    {
+        FatalIOErrorInFunction(schemes_.lookup("freeSurfaceDivR"))
+            << "Entry freeSurfaceDivR " << divRMax
+            << ": expected 0 < freeSurfaceDivR < 2 (D{r} is 2 inside the"
+            << " fluid)" << exit(FatalIOError);
+    }
+    return divRMax;
+}
+
+
+Foam::scalar Foam::SPH::isph::readMinWallDistance() const
+{
+    // Eq. (39)'s distance of a particle about to hit a wall
+    const scalar minWallDistance =
+        schemes_.getOrDefault<scalar>("minWallDistance", kernel_->support()/8);
+    if (!(minWallDistance >= 0 && minWallDistance < dr_))
+    {
+        FatalIOErrorInFunction(schemes_)
+            << "Entry minWallDistance " << minWallDistance
+            << ": expected 0 (off) or a distance below dr = " << dr_
+            << exit(FatalIOError);
+    }
+    return minWallDistance;
+}
+
+
+void Foam::SPH::isph::addTurbulence()
+{
+    if (turbulence_->isLaminar()) return;
+    if (implicitViscosity_)
+    {
+        FatalIOErrorInFunction(schemes_.lookup("viscousScheme"))
+            << "viscousScheme implicit with the RAS model "
+            << turbulence_->type() << ": the implicit step has a uniform"
+            << " viscosity; use viscousScheme explicit (the paper's)"
+            << exit(FatalIOError);
+    }
+    stages_.add
+    (
+        new memberStage<turbulenceModel>
+        (
+            "turbulence", turbulence_->reads(), turbulence_->writes(),
+            turbulence_->description(), *turbulence_,
+            &turbulenceModel::correct
+        )
+    );
+}
+
+
+void Foam::SPH::isph::addPressureSolve
+(
+    const projection::gradientForm gradient
+)
+{
+    isphWork& w = *work_;
+    const bool renormalised =
+        gradient == projection::gradientForm::renormalised;
+    autoPtr<airPockets> newPockets
+    (
+        airPockets::New(w, runTime_, dr_, freeSurface_, motion_->any())
+    );
+    pockets_ = newPockets ? &stages_.add(newPockets.ptr()) : nullptr;
+    pressurePoisson& pressure = stages_.add
+    (
+        new pressurePoisson(w, runTime_, solution_, renormalised, freeSurface_)
+    );
+    pressure_ = &pressure;
+    if (pockets_ && w.ghostSurface)
+    {
+        stages_.add(new airPocketCoupling(w, *pockets_, pressure, gradient));
+    }
+}
+
+
 void Foam::SPH::isph::addStages()
 {
     const projection::gradientForm gradient =
@@ -153,25 +232,8 @@ void Foam::SPH::isph::addStages()
             schemes_, "shiftCoeff", 0.7, {0, 10},
             "C of the shift eq. (36); 0.7 calibrated for the Wendland kernel"
         );
-    // Section 3.2: "D{r} <= 1.5 in 2-D"
-    const scalar divRMax = schemes_.getOrDefault<scalar>("freeSurfaceDivR", 1.5);
-    if (!(divRMax > 0 && divRMax < 2))
-    {
-        FatalIOErrorInFunction(schemes_.lookup("freeSurfaceDivR"))
-            << "Entry freeSurfaceDivR " << divRMax
-            << ": expected 0 < freeSurfaceDivR < 2 (D{r} is 2 inside the"
-            << " fluid)" << exit(FatalIOError);
-    }
-    // Eq. (39)'s distance of a particle about to hit a wall
-    const scalar minWallDistance =
-        schemes_.getOrDefault<scalar>("minWallDistance", kernel_->support()/8);
-    if (!(minWallDistance >= 0 && minWallDistance < dr_))
-    {
-        FatalIOErrorInFunction(schemes_)
-            << "Entry minWallDistance " << minWallDistance
-            << ": expected 0 (off) or a distance below dr = " << dr_
-            << exit(FatalIOError);
-    }
+    const scalar divRMax = readFreeSurfaceDivR();
+    const scalar minWallDistance = readMinWallDistance();
     freeSurface_ = hasFreeSurface(divRMax);
     // Leroy et al. 2015 after eq. (17): confined, the dynamic pressure
     work_->dynamicPressureGradient = !freeSurface_ && !renormalised;
@@ -188,42 +250,10 @@ void Foam::SPH::isph::addStages()
     ghostCondition(renormalised);
     readInteriorCompaction();
     stages_.add(new usawNeighbours(w, ""));
-    if (!turbulence_->isLaminar())
-    {
-        if (implicitViscosity_)
-        {
-            FatalIOErrorInFunction(schemes_.lookup("viscousScheme"))
-                << "viscousScheme implicit with the RAS model "
-                << turbulence_->type() << ": the implicit step has a uniform"
-                << " viscosity; use viscousScheme explicit (the paper's)"
-                << exit(FatalIOError);
-        }
-        stages_.add
-        (
-            new memberStage<turbulenceModel>
-            (
-                "turbulence", turbulence_->reads(), turbulence_->writes(),
-                turbulence_->description(), *turbulence_,
-                &turbulenceModel::correct
-            )
-        );
-    }
+    addTurbulence();
     addPrediction(gradient);
     if (freeSurface_) stages_.add(new freeSurface(w, divRMax));
-    autoPtr<airPockets> newPockets
-    (
-        airPockets::New(w, runTime_, dr_, freeSurface_, moving)
-    );
-    pockets_ = newPockets ? &stages_.add(newPockets.ptr()) : nullptr;
-    pressurePoisson& pressure = stages_.add
-    (
-        new pressurePoisson(w, runTime_, solution_, renormalised, freeSurface_)
-    );
-    pressure_ = &pressure;
-    if (pockets_ && w.ghostSurface)
-    {
-        stages_.add(new airPocketCoupling(w, *pockets_, pressure, gradient));
-    }
+    addPressureSolve(gradient);
     stages_.add(new projection(w, gradient));
     if (thermal_) addHeatTransfer();
     stages_.add(new drift(parts_, cloud_->dom(), nFluid_, 0.5, "eq. (34)"));

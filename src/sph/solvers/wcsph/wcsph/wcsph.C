@@ -244,21 +244,8 @@ std::string Foam::SPH::wcsph::neighbourPolicy() const
 }
 
 
-void Foam::SPH::wcsph::addStages()
+std::string Foam::SPH::wcsph::ratesDescription() const
 {
-    // First: the viscous term the rates describe is the model's
-    autoPtr<wcsphTurbulence> turbulence;
-    if (!turbulence_->isLaminar())
-    {
-        turbulence.reset
-        (
-            new wcsphTurbulence
-            (
-                runTime_, schemes_, *turbulence_, work_, *wallModel_,
-                *walls_, fresh_, [this]() { updateNeighbours(); }
-            )
-        );
-    }
     OStringStream rates;
     const char* indent = "        ";
     rates
@@ -274,8 +261,12 @@ void Foam::SPH::wcsph::addStages()
     // The stage's description ends without a newline
     std::string description(rates.str());
     description.pop_back();
+    return description;
+}
 
-    addIntegratorStage(description);
+
+void Foam::SPH::wcsph::addWallSafetyNets()
+{
     if (crossing_)
     {
         stages_.add
@@ -315,6 +306,26 @@ void Foam::SPH::wcsph::addStages()
             )
         );
     }
+}
+
+
+void Foam::SPH::wcsph::addStages()
+{
+    // First: the viscous term the rates describe is the model's
+    autoPtr<wcsphTurbulence> turbulence;
+    if (!turbulence_->isLaminar())
+    {
+        turbulence.reset
+        (
+            new wcsphTurbulence
+            (
+                runTime_, schemes_, *turbulence_, work_, *wallModel_,
+                *walls_, fresh_, [this]() { updateNeighbours(); }
+            )
+        );
+    }
+    addIntegratorStage(ratesDescription());
+    addWallSafetyNets();
     if (schemes_.getOrDefault<bool>("shifting", false))
     {
         stages_.add
