@@ -45,6 +45,73 @@ void Foam::SPH::neighbourList::check
 
 
 template<bool StoreGeometry>
+void Foam::SPH::neighbourList::searchRange
+(
+    const cellLinkedList& cells,
+    const UList<vector2D>& targets,
+    const scalar radius,
+    const bool excludeSelf,
+    const label first,
+    const label end,
+    threadPairs* mine
+)
+{
+    const vector2D* __restrict__ x = targets.cdata();
+    label* __restrict__ off = offsets_.data();
+    for (label i = first; i < end; ++i)
+    {
+        const label self = (excludeSelf ? i : -1);
+        label c = 0;
+        cells.forEachNeighbour
+        (
+            x[i],
+            radius,
+            [&](const label j, const vector2D& d, const scalar r2)
+            {
+                if (j == self) return;
+                ++c;
+                if (!mine)
+                {
+                    indices_.append(j);
+                    if (StoreGeometry)
+                    {
+                        rij_.append(d);
+                        r_.append(std::sqrt(r2));
+                    }
+                }
+                else
+                {
+                    mine->indices.push_back(j);
+                    if (StoreGeometry)
+                    {
+                        mine->rij.push_back(d);
+                        mine->r.push_back(std::sqrt(r2));
+                    }
+                }
+            }
+        );
+        off[i + 1] = c;
+    }
+}
+
+
+template<bool StoreGeometry>
+void Foam::SPH::neighbourList::placePairs
+(
+    const threadPairs& mine,
+    const label start
+)
+{
+    std::copy(mine.indices.begin(), mine.indices.end(), indices_.begin() + start);
+    if (StoreGeometry)
+    {
+        std::copy(mine.rij.begin(), mine.rij.end(), rij_.begin() + start);
+        std::copy(mine.r.begin(), mine.r.end(), r_.begin() + start);
+    }
+}
+
+
+template<bool StoreGeometry>
 void Foam::SPH::neighbourList::search
 (
     const cellLinkedList& cells,
@@ -54,9 +121,7 @@ void Foam::SPH::neighbourList::search
 )
 {
     const label n = targets.size();
-    const vector2D* __restrict__ x = targets.cdata();
     offsets_.resize(n + 1);
-    label* __restrict__ off = offsets_.data();
     // Emptied, not freed: within the capacity of an earlier build the
     // first thread's appends do not allocate
     indices_.clear();
@@ -78,40 +143,11 @@ void Foam::SPH::neighbourList::search
         mine.indices.clear();
         mine.rij.clear();
         mine.r.clear();
-        for (label i = first; i < end; ++i)
-        {
-            const label self = (excludeSelf ? i : -1);
-            label c = 0;
-            cells.forEachNeighbour
-            (
-                x[i],
-                radius,
-                [&](const label j, const vector2D& d, const scalar r2)
-                {
-                    if (j == self) return;
-                    ++c;
-                    if (t == 0)
-                    {
-                        indices_.append(j);
-                        if (StoreGeometry)
-                        {
-                            rij_.append(d);
-                            r_.append(std::sqrt(r2));
-                        }
-                    }
-                    else
-                    {
-                        mine.indices.push_back(j);
-                        if (StoreGeometry)
-                        {
-                            mine.rij.push_back(d);
-                            mine.r.push_back(std::sqrt(r2));
-                        }
-                    }
-                }
-            );
-            off[i + 1] = c;
-        }
+        searchRange<StoreGeometry>
+        (
+            cells, targets, radius, excludeSelf, first, end,
+            t == 0 ? nullptr : &mine
+        );
 
         // Every count is in: the offsets, and room behind the first
         // thread's pairs (resize keeps them) for the others'
@@ -128,19 +164,7 @@ void Foam::SPH::neighbourList::search
         }
         if (t > 0)
         {
-            std::copy
-            (
-                mine.indices.begin(), mine.indices.end(),
-                indices_.begin() + off[first]
-            );
-            if (StoreGeometry)
-            {
-                std::copy
-                (
-                    mine.rij.begin(), mine.rij.end(), rij_.begin() + off[first]
-                );
-                std::copy(mine.r.begin(), mine.r.end(), r_.begin() + off[first]);
-            }
+            placePairs<StoreGeometry>(mine, offsets_[first]);
         }
     }
 }

@@ -39,6 +39,29 @@ namespace
         return vector2D(-t.y(), t.x());
     }
 
+    //- Points a + (j/n) ab, j = 0..n-1 (and n when withEnd), n pieces of
+    //- about dr. The edge is given as ab, not as its end: a periodic
+    //- wall's pieces then span exactly its period
+    void appendPieces
+    (
+        const vector2D& a,
+        const vector2D& ab,
+        const scalar dr,
+        const bool withEnd,
+        const label patchi,
+        DynamicList<vector2D>& pts,
+        DynamicList<label>& patch
+    )
+    {
+        const label n = max(label(1), label(std::round(mag(ab)/dr)));
+        const label nPts = withEnd ? n + 1 : n;
+        for (label j = 0; j < nPts; ++j)
+        {
+            pts.append(a + ab*(scalar(j)/n));
+            patch.append(patchi);
+        }
+    }
+
     const fileName wallsLocal("sphMesh/walls");
 }
 
@@ -385,6 +408,85 @@ Foam::List<Foam::labelList> Foam::SPH::wallMesh::tracedChains() const
 }
 
 
+Foam::List<Foam::vector2D> Foam::SPH::wallMesh::unwrappedChain
+(
+    const labelList& chain
+) const
+{
+    List<vector2D> u(chain.size());
+    u[0] = points_[chain[0]];
+    for (label i = 1; i < chain.size(); ++i)
+    {
+        u[i] = domain_.image(points_[chain[i]], u[i - 1]);
+    }
+    return u;
+}
+
+
+Foam::labelList Foam::SPH::wallMesh::chainCorners(const labelList& chain) const
+{
+    const bool closed = chain.first() == chain.last();
+    DynamicList<label> corners;
+    for (label i = 0; i < chain.size() - 1; ++i)
+    {
+        const label sIn = segmentIn_[chain[i]];
+        const vector2D outNormal(-segmentNormals_[segmentOut_[chain[i]]]);
+        if
+        (
+            (i == 0 && !closed)
+         || sIn < 0
+         || mag(cross2D(segmentNormals_[sIn], outNormal)) > 1e-8
+        )
+        {
+            corners.append(i);
+        }
+    }
+    if (!closed)
+    {
+        corners.append(chain.size() - 1);
+    }
+    return labelList(std::move(corners));
+}
+
+
+Foam::List<Foam::vector2D> Foam::SPH::wallMesh::cornerOffsets
+(
+    const labelList& chain,
+    const labelList& corners,
+    const UList<vector2D>& unwrapped,
+    const scalar d
+) const
+{
+    const bool closed = chain.first() == chain.last();
+    const label nSeg = chain.size() - 1;
+    List<vector2D> offset(corners.size());
+    forAll(corners, k)
+    {
+        const label i = corners[k];
+        const label sIn = segmentIn_[chain[i]];
+        const label sOut = segmentOut_[chain[i]];
+        const bool hasIn = sIn >= 0 && (closed || i > 0);
+        const bool hasOut = sOut >= 0 && (closed || i < nSeg);
+        vector2D m;
+        if (hasIn && hasOut)
+        {
+            // Mitred: the offset lines of both segments meet there; the
+            // sharpest corners' mitre is capped at about 4.5 d
+            const vector2D m1 = -segmentNormals_[sIn];
+            const vector2D m2 = -segmentNormals_[sOut];
+            const scalar c = 1 + (m1 & m2);
+            m = (c > 0.1) ? (m1 + m2)/c : (m1 + m2)/0.1;
+        }
+        else
+        {
+            m = -segmentNormals_[hasIn ? sIn : sOut];
+        }
+        offset[k] = unwrapped[i] + d*m;
+    }
+    return offset;
+}
+
+
 bool Foam::SPH::wallMesh::offsetChain
 (
     const labelList& chain,
@@ -395,40 +497,12 @@ bool Foam::SPH::wallMesh::offsetChain
 ) const
 {
     const bool closed = chain.first() == chain.last();
-
-    // Outward (non-fluid side) normal of the segment leaving chain[i]
-    auto outNormal = [&](label i)
-    {
-        return -segmentNormals_[segmentOut_[chain[i]]];
-    };
     const label nSeg = chain.size() - 1;
+    const List<vector2D> u(unwrappedChain(chain));
 
-    // The chain unwrapped: each vertex the image nearest its predecessor
-    // (the vertices themselves when nothing is periodic). A closed chain
-    // through a periodic seam ends one period away from its start
-    List<vector2D> u(chain.size());
-    u[0] = points_[chain[0]];
-    for (label i = 1; i < chain.size(); ++i)
-    {
-        u[i] = domain_.image(points_[chain[i]], u[i - 1]);
-    }
+    // A closed chain through a periodic seam ends one period from its start
     const vector2D closingShift(closed ? u[nSeg] - u[0] : vector2D::zero);
-
-    // Corners only: where the direction changes (and the ends)
-    DynamicList<label> knots;    // index in chain
-    for (label i = 0; i < nSeg; ++i)
-    {
-        const bool end = (i == 0 && !closed);
-        const label sIn = segmentIn_[chain[i]];
-        if (end || sIn < 0 || mag(cross2D(segmentNormals_[sIn], outNormal(i))) > 1e-8)
-        {
-            knots.append(i);
-        }
-    }
-    if (!closed)
-    {
-        knots.append(nSeg);
-    }
+    const labelList knots(chainCorners(chain));
 
     // A closed chain without corners is a straight wall through a periodic
     // seam: its one edge runs from the middle of its first segment once
@@ -436,47 +510,18 @@ bool Foam::SPH::wallMesh::offsetChain
     // midpoints, where the fluid lattice's columns are
     if (knots.empty())
     {
-        const vector2D start(0.5*(u[0] + u[1]) + d*outNormal(0));
-        const vector2D& L = closingShift;
-        const label n = max(label(1), label(std::round(mag(L)/dr)));
+        const vector2D outNormal(-segmentNormals_[segmentOut_[chain[0]]]);
+        const vector2D start(0.5*(u[0] + u[1]) + d*outNormal);
         const label patchi = segmentPatch_[segmentOut_[chain[0]]];
-        for (label j = 0; j < n; ++j)
-        {
-            pts.append(start + L*(scalar(j)/n));
-            patch.append(patchi);
-        }
-        return mag(L) > 0;
-    }
-
-    // Mitred offset of each corner
-    List<vector2D> offset(knots.size());
-    forAll(knots, k)
-    {
-        const label i = knots[k];
-        const label v = chain[i];
-        const label sIn = segmentIn_[v];
-        const label sOut = segmentOut_[v];
-        const bool hasIn = sIn >= 0 && (closed || i > 0);
-        const bool hasOut = sOut >= 0 && (closed || i < nSeg);
-        vector2D m;
-        if (hasIn && hasOut)
-        {
-            const vector2D m1 = -segmentNormals_[sIn];
-            const vector2D m2 = -segmentNormals_[sOut];
-            const scalar c = 1 + (m1 & m2);
-            m = (c > 0.1) ? (m1 + m2)/c : (m1 + m2)/0.1;
-        }
-        else
-        {
-            m = -segmentNormals_[hasIn ? sIn : sOut];
-        }
-        offset[k] = u[i] + d*m;
+        appendPieces(start, closingShift, dr, false, patchi, pts, patch);
+        return mag(closingShift) > 0;
     }
 
     // Split every offset edge into pieces of about dr. A reversed edge has
     // collapsed: a wall shorter than the offset between two corners turning
     // the same way (the narrow crest of a weir plate). It is left out; its
     // neighbours' offsets overlap there, and the caller drops the overlap.
+    const List<vector2D> offset(cornerOffsets(chain, knots, u, d));
     const label nEdges = closed ? knots.size() : knots.size() - 1;
     bool any = false;
     for (label e = 0; e < nEdges; ++e)
@@ -493,58 +538,22 @@ bool Foam::SPH::wallMesh::offsetChain
         }
         any = true;
         const label patchi = segmentPatch_[segmentOut_[chain[knots[e]]]];
-        const label n = max(label(1), label(std::round(mag(b - a)/dr)));
-        const label nPts = (!closed && e == nEdges - 1) ? n + 1 : n;
-        for (label j = 0; j < nPts; ++j)
-        {
-            pts.append(a + (b - a)*(scalar(j)/n));
-            patch.append(patchi);
-        }
+        const bool lastOfOpen = !closed && e == nEdges - 1;
+        appendPieces(a, b - a, dr, lastOfOpen, patchi, pts, patch);
     }
     return any;
 }
 
 
-void Foam::SPH::wallMesh::dummyLayers
+Foam::labelList Foam::SPH::wallMesh::spacedOutside
 (
-    label nLayers,
-    scalar dr,
-    List<vector2D>& positions,
-    labelList& layer,
-    labelList& patch
+    const UList<vector2D>& pts,
+    const scalar dr
 ) const
 {
-    // Layer k lies (k + 1/2) dr outside the wall: the fluid lattice (dr/2
-    // inside) continued through the wall, so the particle density is
-    // uniform across it and layer 0, the one next to the wall, repels
-    DynamicList<vector2D> pts;
-    DynamicList<label> lay;
-    DynamicList<label> pat;
-
-    const List<labelList> chains(tracedChains());
-    for (label k = 0; k < nLayers; ++k)
-    {
-        for (const labelList& chain : chains)
-        {
-            if (offsetChain(chain, (k + 0.5)*dr, dr, pts, pat))
-            {
-                lay.setSize(pts.size(), k);
-            }
-        }
-    }
-
-    // Offsets of a chain through a periodic seam run past it: back into
-    // the box
-    for (vector2D& p : pts)
-    {
-        p = domain_.wrap(p);
-    }
-
-    // Keep a dummy unless it lies on the fluid side of some wall or within
-    // dr/2 of one already kept (where chains meet or overlap). The grid's
-    // cells are dr/2; in a periodic direction they tile the period (a
-    // whole number of cells, each at least dr/2) and the neighbour cells
-    // wrap, so a dummy just across the seam is seen too
+    // The grid's cells are dr/2; in a periodic direction they tile the
+    // period (a whole number of cells, each at least dr/2) and the
+    // neighbour cells wrap, so a point just across the seam is seen too
     const scalar cell = 0.5*dr;
     FixedList<int64_t, 2> nPeriod(int64_t(0));
     vector2D periodCell(cell, cell);
@@ -605,7 +614,47 @@ void Foam::SPH::wallMesh::dummyLayers
             keep.append(i);
         }
     }
+    return labelList(std::move(keep));
+}
 
+
+void Foam::SPH::wallMesh::dummyLayers
+(
+    label nLayers,
+    scalar dr,
+    List<vector2D>& positions,
+    labelList& layer,
+    labelList& patch
+) const
+{
+    // Layer k lies (k + 1/2) dr outside the wall: the fluid lattice (dr/2
+    // inside) continued through the wall, so the particle density is
+    // uniform across it and layer 0, the one next to the wall, repels
+    DynamicList<vector2D> pts;
+    DynamicList<label> lay;
+    DynamicList<label> pat;
+
+    const List<labelList> chains(tracedChains());
+    for (label k = 0; k < nLayers; ++k)
+    {
+        for (const labelList& chain : chains)
+        {
+            if (offsetChain(chain, (k + 0.5)*dr, dr, pts, pat))
+            {
+                lay.setSize(pts.size(), k);
+            }
+        }
+    }
+
+    // Offsets of a chain through a periodic seam run past it: back into
+    // the box
+    for (vector2D& p : pts)
+    {
+        p = domain_.wrap(p);
+    }
+
+    // Where chains meet or overlap, the dummies of both are there
+    const labelList keep(spacedOutside(pts, dr));
     positions = UIndirectList<vector2D>(pts, keep);
     layer = UIndirectList<label>(lay, keep);
     patch = UIndirectList<label>(pat, keep);

@@ -157,6 +157,88 @@ bool Foam::SPH::wallMesh::closedWalls() const
 }
 
 
+bool Foam::SPH::wallMesh::passesThrough
+(
+    const label v,
+    const label k,
+    const scalar tol
+) const
+{
+    auto inner = [&](const label w)
+    {
+        return segmentIn_[w] >= 0 && segmentOut_[w] >= 0;
+    };
+    if (!inner(v) || v == segments_[k].first() || v == segments_[k].second())
+    {
+        return false;
+    }
+    // On an end of k: a crossing only if that end goes on too (a wall end
+    // at a vertex of another wall is a junction)
+    for (const label w : {segments_[k].first(), segments_[k].second()})
+    {
+        if (mag(domain_.separation(points_[v], points_[w])) <= tol)
+        {
+            return inner(w);
+        }
+    }
+    const vector2D p0(domain_.image(points_[segments_[k].first()], points_[v]));
+    const vector2D e(segmentVector(k));
+    const scalar u = min(max(((points_[v] - p0) & e)/magSqr(e), 0.0), 1.0);
+    return mag(points_[v] - (p0 + u*e)) <= tol;
+}
+
+
+bool Foam::SPH::wallMesh::segmentsCross
+(
+    const label i,
+    const label j,
+    const scalar tol,
+    bool& overlap
+) const
+{
+    const vector2D a(points_[segments_[i].first()]);
+    const vector2D ab(segmentVector(i));
+    const vector2D c(domain_.image(points_[segments_[j].first()], a));
+    const vector2D cd(segmentVector(j));
+    const scalar lab = mag(ab), lcd = mag(cd);
+    const scalar eps = 1e-9*max(lab, lcd);
+    const scalar oc = cross2D(ab, c - a)/lab;
+    const scalar od = cross2D(ab, c + cd - a)/lab;
+    if (mag(oc) <= eps && mag(od) <= eps)
+    {
+        // Along one line: the common part of the two intervals
+        const vector2D u(ab/lab);
+        const scalar tc = (c - a) & u, td = (c + cd - a) & u;
+        const scalar common = min(lab, max(tc, td)) - max(0.0, min(tc, td));
+        overlap = true;
+        return common > tol;
+    }
+    const scalar oa = cross2D(cd, a - c)/lcd;
+    const scalar ob = cross2D(cd, a + ab - c)/lcd;
+    overlap = false;
+    if
+    (
+        ((oc > eps && od < -eps) || (oc < -eps && od > eps))
+     && ((oa > eps && ob < -eps) || (oa < -eps && ob > eps))
+    )
+    {
+        return true;
+    }
+
+    // A wall going on through a point of the other: they cross or touch
+    // there. A wall end on another wall is a junction
+    for (const label v : {segments_[i].first(), segments_[i].second()})
+    {
+        if (passesThrough(v, j, tol)) return true;
+    }
+    for (const label v : {segments_[j].first(), segments_[j].second()})
+    {
+        if (passesThrough(v, i, tol)) return true;
+    }
+    return false;
+}
+
+
 bool Foam::SPH::wallMesh::findCrossing
 (
     const scalar tol,
@@ -165,77 +247,6 @@ bool Foam::SPH::wallMesh::findCrossing
     bool& overlap
 ) const
 {
-    // Do segments i and j cross (interiors on both sides of each other)
-    // or overlap along one line by more than tol?
-    auto test = [&](const label i, const label j)
-    {
-        const vector2D a(points_[segments_[i].first()]);
-        const vector2D ab(segmentVector(i));
-        const vector2D c(domain_.image(points_[segments_[j].first()], a));
-        const vector2D cd(segmentVector(j));
-        const scalar lab = mag(ab), lcd = mag(cd);
-        const scalar eps = 1e-9*max(lab, lcd);
-        const scalar oc = cross2D(ab, c - a)/lab;
-        const scalar od = cross2D(ab, c + cd - a)/lab;
-        if (mag(oc) <= eps && mag(od) <= eps)
-        {
-            // Along one line: the common part of the two intervals
-            const vector2D u(ab/lab);
-            const scalar tc = (c - a) & u, td = (c + cd - a) & u;
-            const scalar common = min(lab, max(tc, td)) - max(0.0, min(tc, td));
-            overlap = true;
-            return common > tol;
-        }
-        const scalar oa = cross2D(cd, a - c)/lcd;
-        const scalar ob = cross2D(cd, a + ab - c)/lcd;
-        overlap = false;
-        if
-        (
-            ((oc > eps && od < -eps) || (oc < -eps && od > eps))
-         && ((oa > eps && ob < -eps) || (oa < -eps && ob > eps))
-        )
-        {
-            return true;
-        }
-
-        // A wall going on through a point of another (a vertex with a
-        // segment in and out on the other's segment, or on its vertex): they
-        // cross or touch there. A wall end on another wall is a junction
-        auto inner = [&](const label v)
-        {
-            return segmentIn_[v] >= 0 && segmentOut_[v] >= 0;
-        };
-        auto onSegment = [&](const label v, const label k)
-        {
-            if (v == segments_[k].first() || v == segments_[k].second())
-            {
-                return false;
-            }
-            // On an end of k: a crossing only if that end goes on too (a
-            // wall end at a vertex of another wall is a junction)
-            for (const label w : {segments_[k].first(), segments_[k].second()})
-            {
-                if (mag(domain_.separation(points_[v], points_[w])) <= tol)
-                {
-                    return inner(w);
-                }
-            }
-            const vector2D p0(domain_.image(points_[segments_[k].first()], points_[v]));
-            const vector2D e(segmentVector(k));
-            const scalar u = min(max(((points_[v] - p0) & e)/magSqr(e), 0.0), 1.0);
-            return mag(points_[v] - (p0 + u*e)) <= tol;
-        };
-        for (const label v : {segments_[i].first(), segments_[i].second()})
-        {
-            if (inner(v) && onSegment(v, j)) return true;
-        }
-        for (const label v : {segments_[j].first(), segments_[j].second()})
-        {
-            if (inner(v) && onSegment(v, i)) return true;
-        }
-        return false;
-    };
-
     if (gridCell_ > 0)
     {
         for (const auto& cell : grid_)
@@ -247,7 +258,7 @@ bool Foam::SPH::wallMesh::findCrossing
                 {
                     s = min(segs[m], segs[k]);
                     t = max(segs[m], segs[k]);
-                    if (s != t && test(s, t))
+                    if (s != t && segmentsCross(s, t, tol, overlap))
                     {
                         return true;
                     }
@@ -262,7 +273,7 @@ bool Foam::SPH::wallMesh::findCrossing
     {
         for (t = s + 1; t < segments_.size(); ++t)
         {
-            if (test(s, t))
+            if (segmentsCross(s, t, tol, overlap))
             {
                 return true;
             }
