@@ -136,6 +136,52 @@ void Foam::SPH::wallConditions::readEntry(const entry& e)
 }
 
 
+void Foam::SPH::wallConditions::refuseUnused
+(
+    const dictionary& boundaryField,
+    const entry& e
+) const
+{
+    const wordList& patches = walls_.patchNames();
+    if (!e.isDict())
+    {
+        FatalIOErrorInFunction(boundaryField)
+            << "Entry " << e.keyword() << " of boundaryField is not a"
+            << " dictionary: expected one per patch" << exit(FatalIOError);
+    }
+    const word type(e.dict().getOrDefault<word>("type", word::null));
+    if (ignoredTypes.found(type))
+    {
+        return;
+    }
+    if (e.keyword().isPattern())
+    {
+        bool matches = false;
+        for (const word& p : patches)
+        {
+            matches = matches || e.keyword().match(p);
+        }
+        FatalIOErrorInFunction(e.dict())
+            << "Pattern " << e.keyword()
+            << (
+                   matches
+                 ? " is overridden for every wall patch it matches"
+                 : " matches no wall patch"
+               )
+            << " of the SPH mesh (constant/sphMesh/walls/patchNames)" << nl
+            << "Wall patches: " << joined(patches).c_str() << nl
+            << "(only entries of type " << joined(ignoredTypes).c_str()
+            << " may name other patches)" << exit(FatalIOError);
+    }
+    FatalIOErrorInFunction(e.dict())
+        << "No wall patch " << e.keyword() << " in the SPH mesh"
+        << " (constant/sphMesh/walls/patchNames)" << nl
+        << "Wall patches: " << joined(patches).c_str() << nl
+        << "(only entries of type " << joined(ignoredTypes).c_str()
+        << " may name other patches)" << exit(FatalIOError);
+}
+
+
 void Foam::SPH::wallConditions::read(const dictionary& boundaryField)
 {
     const wordList& patches = walls_.patchNames();
@@ -156,46 +202,10 @@ void Foam::SPH::wallConditions::read(const dictionary& boundaryField)
     // Entries that give no wall patch its condition
     for (const entry& e : boundaryField)
     {
-        if (used.found(&e))
+        if (!used.found(&e))
         {
-            continue;
+            refuseUnused(boundaryField, e);
         }
-        if (!e.isDict())
-        {
-            FatalIOErrorInFunction(boundaryField)
-                << "Entry " << e.keyword() << " of boundaryField is not a"
-                << " dictionary: expected one per patch" << exit(FatalIOError);
-        }
-        const word type(e.dict().getOrDefault<word>("type", word::null));
-        if (ignoredTypes.found(type))
-        {
-            continue;
-        }
-        if (e.keyword().isPattern())
-        {
-            bool matches = false;
-            for (const word& p : patches)
-            {
-                matches = matches || e.keyword().match(p);
-            }
-            FatalIOErrorInFunction(e.dict())
-                << "Pattern " << e.keyword()
-                << (
-                       matches
-                     ? " is overridden for every wall patch it matches"
-                     : " matches no wall patch"
-                   )
-                << " of the SPH mesh (constant/sphMesh/walls/patchNames)" << nl
-                << "Wall patches: " << joined(patches).c_str() << nl
-                << "(only entries of type " << joined(ignoredTypes).c_str()
-                << " may name other patches)" << exit(FatalIOError);
-        }
-        FatalIOErrorInFunction(e.dict())
-            << "No wall patch " << e.keyword() << " in the SPH mesh"
-            << " (constant/sphMesh/walls/patchNames)" << nl
-            << "Wall patches: " << joined(patches).c_str() << nl
-            << "(only entries of type " << joined(ignoredTypes).c_str()
-            << " may name other patches)" << exit(FatalIOError);
     }
 
     forAll(patches, patchi)

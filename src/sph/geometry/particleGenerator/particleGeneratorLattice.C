@@ -12,6 +12,56 @@ Description
 #include "mathematicalConstants.H"
 #include <cmath>
 
+namespace
+{
+    using namespace Foam;
+
+    //- The walls' signed distance at the nodes of one lattice row, in
+    //- order. With closed walls it is 1-Lipschitz: a node within
+    //- |d(q)| - dr/2 of the last node q searched is on q's side, and if
+    //- that is the fluid's at least dr/2 from the walls (a margin for
+    //- round-off): minDist, or -GREAT on the other side, with no search
+    class rowDistance
+    {
+        const SPH::wallMesh& walls_;
+        const bool lipschitz_;
+        const scalar minDist_;
+        const scalar margin_;
+        bool haveQ_ = false;
+        vector2D q_ = vector2D::zero;
+        scalar dq_ = 0;
+
+    public:
+
+        rowDistance(const SPH::wallMesh& walls, scalar minDist, scalar margin)
+        :
+            walls_(walls),
+            lipschitz_(walls.closedWalls()),
+            minDist_(minDist),
+            margin_(margin)
+        {}
+
+        scalar operator()(const vector2D& p)
+        {
+            const scalar s =
+                haveQ_ ? mag(walls_.domain().separation(p, q_)) : GREAT;
+            if (lipschitz_ && haveQ_ && dq_ > 0 && dq_ - s >= minDist_ + margin_)
+            {
+                return minDist_;
+            }
+            if (lipschitz_ && haveQ_ && dq_ < 0 && dq_ + s < -minDist_ - margin_)
+            {
+                return -GREAT;
+            }
+            haveQ_ = true;
+            q_ = p;
+            dq_ = walls_.signedDistance(p);
+            return dq_;
+        }
+    };
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::vector2D Foam::SPH::particleGenerator::latticeRange
@@ -119,20 +169,12 @@ void Foam::SPH::particleGenerator::seedFluid
         return false;
     };
 
-    // Closed walls: the signed distance is 1-Lipschitz, so a point within
-    // |d(q)| - dr/2 of the last point q searched is on q's side, at least
-    // dr/2 from the walls (a margin for round-off)
-    const bool lipschitz = walls_->closedWalls();
-    const scalar margin = 1e-6*dr_;
-
     DynamicList<vector2D> pts;
     label nOutside = 0;
     vector2D example(vector2D::zero);
     for (label j = j0; j <= j1; ++j)
     {
-        bool haveQ = false;
-        vector2D q(vector2D::zero);
-        scalar dq = 0;
+        rowDistance distance(*walls_, minDist, 1e-6*dr_);
         for (label i = i0; i <= i1; ++i)
         {
             // Wrapped: a node a rounding below min is min itself
@@ -146,23 +188,7 @@ void Foam::SPH::particleGenerator::seedFluid
                 if (!nOutside++) example = p;
                 continue;
             }
-            scalar d = 0;
-            const scalar s = haveQ ? mag(dom.separation(p, q)) : GREAT;
-            if (lipschitz && haveQ && dq > 0 && dq - s >= minDist + margin)
-            {
-                d = minDist;
-            }
-            else if (lipschitz && haveQ && dq < 0 && dq + s < -minDist - margin)
-            {
-                d = -GREAT;
-            }
-            else
-            {
-                d = walls_->signedDistance(p);
-                haveQ = true;
-                q = p;
-                dq = d;
-            }
+            const scalar d = distance(p);
             if (d >= minDist)
             {
                 pts.append(p);

@@ -111,7 +111,12 @@ void Foam::SPH::usawWalls::setGeometry(const UList<vector2D>& points)
         );
         maxHalfLength_ = max(maxHalfLength_, halfLength_[s]);
     }
+    buildSegmentSearch(points);
+}
 
+
+void Foam::SPH::usawWalls::buildSegmentSearch(const UList<vector2D>& points)
+{
     // The search box: in a non-periodic direction the walls' extent plus a
     // margin (a straight wall has none of its own); positions outside it
     // are still found, only less efficiently. No walls (dummy particles
