@@ -44,21 +44,56 @@ def read_parameters(case):
         ("b", "L", "B", "dr", "nb", "rho", "tEnd"))
 
 
-def read_log(case, app):
-    """{cpu, clock, t, steps, end} from log.<app>; NaN where missing."""
-    return read_solver_log(os.path.join(case, "log." + app))
+def read_log(case, app, time=None):
+    """{cpu, clock, t, steps, end} from log.<app>; NaN where missing. With
+    a time: the CPU and clock seconds of the last step logged at or before
+    it (the solvers log every logInterval steps), no step count."""
+    path = os.path.join(case, "log." + app)
+    out = read_solver_log(path)
+    if time is None or not os.path.isfile(path):
+        return out
+    out.update(cpu=nan, clock=nan, steps=None, end=False)
+    timing = re.compile(r"^ExecutionTime = (\S+) s\s+ClockTime = (\S+) s")
+    with open(path, errors="replace") as f:
+        t = -1.0
+        for line in f:
+            if line.startswith("Time = "):
+                try:
+                    t = float(line.split()[2])
+                except (IndexError, ValueError):
+                    continue
+                if t > time*(1 + 1e-9) + 1e-12:
+                    break
+            m = timing.match(line)
+            if m and t >= 0:
+                out["cpu"], out["clock"] = float(m.group(1)), float(m.group(2))
+    out["t"] = time
+    return out
 
 
-def fv_set(case, name):
+def pick_time(names, time, where):
+    """The entry of names (time strings, in order) to read: the last, or the
+    one equal to time (within 1e-6 relative)."""
+    if time is None:
+        return names[-1]
+    for name in names:
+        if abs(float(name) - time) <= 1e-6*max(abs(time), 1.0):
+            return name
+    raise RuntimeError("%s: nothing written at t = %g (written: %s)"
+                       % (where, time, " ".join(names)))
+
+
+def fv_set(case, name, time=None):
     """{x, y, Ux, Uy, Umag, p, k, epsilon, nut} along a set of
-    system/sections at the last sampled time (raw: x y z then the fields
-    in the order of the file name <set>_<f1>_<f2>...xy)."""
+    system/sections at the last sampled time, or at time (raw: x y z then
+    the fields in the order of the file name <set>_<f1>_<f2>...xy)."""
     base = os.path.join(case, "postProcessing", "sections")
     times = time_dirs(base)
     if not times:
         raise RuntimeError("%s: no postProcessing/sections/<time>/" % case)
-    folder = os.path.join(base, times[-1])
-    out = {"time": float(times[-1])}
+    chosen = pick_time(times, time, base)
+    folder = os.path.join(base, chosen)
+    out = {"time": float(chosen)}
     for fname in sorted(os.listdir(folder)):
         m = re.fullmatch(re.escape(name) + r"_(.+)\.xy", fname)
         if not m:
@@ -79,14 +114,16 @@ def fv_set(case, name):
     return out
 
 
-def fv_cells(case):
-    """Cell centres and U at the last time (writeCellCentres: field C)."""
+def fv_cells(case, time=None):
+    """Cell centres and U at the last time, or at time (writeCellCentres:
+    field C)."""
     times = [t for t in time_dirs(case) if float(t) > 0]
     if not times:
         raise RuntimeError("%s: no time folder after 0" % case)
-    last = os.path.join(case, times[-1])
+    chosen = pick_time(times, time, case)
+    last = os.path.join(case, chosen)
     return read_internal_field(os.path.join(last, "C")), \
-        read_internal_field(os.path.join(last, "U")), float(times[-1])
+        read_internal_field(os.path.join(last, "U")), float(chosen)
 
 
 def sph_series(case):
@@ -122,17 +159,19 @@ def read_vtp(path):
     return out
 
 
-def sph_last(case):
-    """The particles of the first and the last file of the series, and the
-    last time."""
+def sph_last(case, time=None):
+    """The particles of the first and the last file of the series (or the
+    file of time), and its time."""
     series = sph_series(case)
     files = json.load(open(series)).get("files", [])
     if not files:
         raise RuntimeError("%s lists no files" % series)
     files = sorted(files, key=lambda f: float(f["time"]))
+    chosen = pick_time([str(f["time"]) for f in files], time, series)
+    last = next(f for f in files if str(f["time"]) == chosen)
     folder = os.path.dirname(series)
     return read_vtp(os.path.join(folder, files[0]["name"])), \
-        read_vtp(os.path.join(folder, files[-1]["name"])), float(files[-1]["time"])
+        read_vtp(os.path.join(folder, last["name"])), float(last["time"])
 
 
 def sph_line(particles, start, end, dr):
