@@ -39,11 +39,13 @@ def read_numeric_entries(path, required=()):
     return values
 
 
-def read_log(path):
+def read_log(path, until=None):
     """{cpu, clock, t, steps, end} of a solver log: the last
     ExecutionTime/ClockTime, the last 'Time =', the number of steps (an SPH
     solver's 'Steps N' summary, the step a failure names, else the count
-    of 'Time =' lines) and whether it reached 'End'; NaN where missing."""
+    of 'Time =' lines) and whether it reached 'End'; NaN where missing.
+    With until: only the log up to that time (the steps are then None: an
+    SPH solver logs every logInterval steps)."""
     out = {"cpu": nan, "clock": nan, "t": nan, "steps": 0, "end": False}
     if not os.path.isfile(path):
         return out
@@ -56,11 +58,15 @@ def read_log(path):
             if m:
                 out["cpu"], out["clock"] = float(m.group(1)), float(m.group(2))
             elif line.startswith("Time = "):
-                out["steps"] += 1
                 try:
-                    out["t"] = float(line.split()[2])
+                    t = float(line.split()[2])
                 except (IndexError, ValueError):
-                    pass
+                    t = out["t"]
+                if until is not None and t > until*(1 + 1e-9) + 1e-12:
+                    out["steps"] = None
+                    return out
+                out["steps"] += 1
+                out["t"] = t
             elif steps.match(line):
                 out["sphSteps"] = int(steps.match(line).group(1))
             elif failedAt.search(line):

@@ -45,42 +45,21 @@ def read_parameters(case):
 
 
 def read_log(case, app, time=None):
-    """{cpu, clock, t, steps, end} from log.<app>; NaN where missing. With
-    a time: the CPU and clock seconds of the last step logged at or before
-    it (the solvers log every logInterval steps), no step count."""
-    path = os.path.join(case, "log." + app)
-    out = read_solver_log(path)
-    if time is None or not os.path.isfile(path):
-        return out
-    out.update(cpu=nan, clock=nan, steps=None, end=False)
-    timing = re.compile(r"^ExecutionTime = (\S+) s\s+ClockTime = (\S+) s")
-    with open(path, errors="replace") as f:
-        t = -1.0
-        for line in f:
-            if line.startswith("Time = "):
-                try:
-                    t = float(line.split()[2])
-                except (IndexError, ValueError):
-                    continue
-                if t > time*(1 + 1e-9) + 1e-12:
-                    break
-            m = timing.match(line)
-            if m and t >= 0:
-                out["cpu"], out["clock"] = float(m.group(1)), float(m.group(2))
-    out["t"] = time
-    return out
+    """{cpu, clock, t, steps, end} from log.<app>, up to time when given;
+    NaN where missing."""
+    return read_solver_log(os.path.join(case, "log." + app), until=time)
 
 
-def pick_time(names, time, where):
-    """The entry of names (time strings, in order) to read: the last, or the
-    one equal to time (within 1e-6 relative)."""
+def pick_time(times, time, where):
+    """Index in times (ascending) to read: the last, or the one equal to
+    time (within 1e-6 relative)."""
     if time is None:
-        return names[-1]
-    for name in names:
-        if abs(float(name) - time) <= 1e-6*max(abs(time), 1.0):
-            return name
+        return len(times) - 1
+    for i, t in enumerate(times):
+        if abs(t - time) <= 1e-6*max(abs(time), 1.0):
+            return i
     raise RuntimeError("%s: nothing written at t = %g (written: %s)"
-                       % (where, time, " ".join(names)))
+                       % (where, time, " ".join("%g" % t for t in times)))
 
 
 def fv_set(case, name, time=None):
@@ -91,7 +70,7 @@ def fv_set(case, name, time=None):
     times = time_dirs(base)
     if not times:
         raise RuntimeError("%s: no postProcessing/sections/<time>/" % case)
-    chosen = pick_time(times, time, base)
+    chosen = times[pick_time([float(t) for t in times], time, base)]
     folder = os.path.join(base, chosen)
     out = {"time": float(chosen)}
     for fname in sorted(os.listdir(folder)):
@@ -120,7 +99,7 @@ def fv_cells(case, time=None):
     times = [t for t in time_dirs(case) if float(t) > 0]
     if not times:
         raise RuntimeError("%s: no time folder after 0" % case)
-    chosen = pick_time(times, time, case)
+    chosen = times[pick_time([float(t) for t in times], time, case)]
     last = os.path.join(case, chosen)
     return read_internal_field(os.path.join(last, "C")), \
         read_internal_field(os.path.join(last, "U")), float(chosen)
@@ -167,8 +146,7 @@ def sph_last(case, time=None):
     if not files:
         raise RuntimeError("%s lists no files" % series)
     files = sorted(files, key=lambda f: float(f["time"]))
-    chosen = pick_time([str(f["time"]) for f in files], time, series)
-    last = next(f for f in files if str(f["time"]) == chosen)
+    last = files[pick_time([float(f["time"]) for f in files], time, series)]
     folder = os.path.dirname(series)
     return read_vtp(os.path.join(folder, files[0]["name"])), \
         read_vtp(os.path.join(folder, last["name"])), float(last["time"])
