@@ -43,15 +43,17 @@ namespace
 
         scalar operator()(const vector2D& p)
         {
-            const scalar s =
-                haveQ_ ? mag(walls_.domain().separation(p, q_)) : GREAT;
-            if (lipschitz_ && haveQ_ && dq_ > 0 && dq_ - s >= minDist_ + margin_)
+            if (lipschitz_ && haveQ_)
             {
-                return minDist_;
-            }
-            if (lipschitz_ && haveQ_ && dq_ < 0 && dq_ + s < -minDist_ - margin_)
-            {
-                return -GREAT;
+                const scalar s = mag(walls_.domain().separation(p, q_));
+                if (dq_ > 0 && dq_ - s >= minDist_ + margin_)
+                {
+                    return minDist_;
+                }
+                if (dq_ < 0 && dq_ + s < -minDist_ - margin_)
+                {
+                    return -GREAT;
+                }
             }
             haveQ_ = true;
             q_ = p;
