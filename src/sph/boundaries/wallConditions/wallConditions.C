@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wallConditions.H"
+#include "StringStream.H"
 #include "fieldDictionary.H"
 #include "Time.H"
 #include "Constant.H"
@@ -154,6 +155,8 @@ void Foam::SPH::wallConditions::refuseUnused
     {
         return;
     }
+    // The keyword as OpenFOAM writes it (a pattern in quotes)
+    OStringStream what;
     if (e.keyword().isPattern())
     {
         bool matches = false;
@@ -161,21 +164,20 @@ void Foam::SPH::wallConditions::refuseUnused
         {
             matches = matches || e.keyword().match(p);
         }
-        FatalIOErrorInFunction(e.dict())
-            << "Pattern " << e.keyword()
+        what<< "Pattern " << e.keyword()
             << (
                    matches
                  ? " is overridden for every wall patch it matches"
                  : " matches no wall patch"
                )
-            << " of the SPH mesh (constant/sphMesh/walls/patchNames)" << nl
-            << "Wall patches: " << joined(patches).c_str() << nl
-            << "(only entries of type " << joined(ignoredTypes).c_str()
-            << " may name other patches)" << exit(FatalIOError);
+            << " of the SPH mesh";
+    }
+    else
+    {
+        what<< "No wall patch " << e.keyword() << " in the SPH mesh";
     }
     FatalIOErrorInFunction(e.dict())
-        << "No wall patch " << e.keyword() << " in the SPH mesh"
-        << " (constant/sphMesh/walls/patchNames)" << nl
+        << what.str().c_str() << " (constant/sphMesh/walls/patchNames)" << nl
         << "Wall patches: " << joined(patches).c_str() << nl
         << "(only entries of type " << joined(ignoredTypes).c_str()
         << " may name other patches)" << exit(FatalIOError);
