@@ -9,6 +9,84 @@
 #include "SubField.H"
 #include "wallPolyPatch.H"
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::SPH::polyMeshWalls::checkTwoD(scalar& tol)
+{
+    const pointField& pts = mesh_.points();
+    const boundBox bb(pts);
+    const scalar zMin = bb.min().z();
+    const scalar thickness = bb.max().z() - zMin;
+    tol = 1e-6*max(thickness, bb.mag());
+    zMid_ = zMin + 0.5*thickness;
+
+    for (const point& p : pts)
+    {
+        if (mag(p.z() - zMin) > tol && mag(p.z() - bb.max().z()) > tol)
+        {
+            FatalErrorInFunction
+                << "The mesh in " << mesh_.objectPath()
+                << " is not 2-D: point " << p << " is neither on z = " << zMin
+                << " nor on z = " << bb.max().z() << nl
+                << "Make it one cell thick in z (front and back patches empty)."
+                << exit(FatalError);
+        }
+    }
+
+    return zMin;
+}
+
+
+Foam::List<Foam::SPH::wallChain> Foam::SPH::polyMeshWalls::patchChains
+(
+    const polyPatch& pp,
+    const scalar zBack,
+    const scalar tol
+) const
+{
+    const pointField& pts = mesh_.points();
+    // faceAreas() returns a SubField by value: keep it, not a reference
+    const vectorField::subField n = pp.faceAreas();
+    DynamicList<wallChain> chains(pp.size());
+
+    forAll(pp, facei)
+    {
+        // The two corners of the face in the back plane
+        DynamicList<vector2D> back;
+        for (const label pi : pp[facei])
+        {
+            if (mag(pts[pi].z() - zBack) <= tol)
+            {
+                back.append(vector2D(pts[pi].x(), pts[pi].y()));
+            }
+        }
+        if (back.size() != 2)
+        {
+            continue;   // not a face across the thickness
+        }
+        // Face normals point out of the domain: fluid on the left of a->b
+        // means the left normal of (b - a) points against n
+        const vector2D t = back[1] - back[0];
+        const vector2D left(-t.y(), t.x());
+        const bool keep = (left.x()*n[facei].x() + left.y()*n[facei].y()) < 0;
+        wallChain c;
+        c.closed = false;
+        c.points.setSize(2);
+        c.points[0] = keep ? back[0] : back[1];
+        c.points[1] = keep ? back[1] : back[0];
+        chains.append(c);
+    }
+
+    if (chains.empty())
+    {
+        FatalErrorInFunction
+            << "Patch " << pp.name() << " has no face across the 2-D"
+            << " mesh's thickness: it cannot be a wall" << exit(FatalError);
+    }
+    return List<wallChain>(std::move(chains));
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::SPH::polyMeshWalls::polyMeshWalls
@@ -20,25 +98,8 @@ Foam::SPH::polyMeshWalls::polyMeshWalls
     mesh_(mesh),
     zMid_(0)
 {
-    const pointField& pts = mesh.points();
-    const boundBox bb(pts);
-    const scalar zMin = bb.min().z();
-    const scalar thickness = bb.max().z() - zMin;
-    const scalar tol = 1e-6*max(thickness, bb.mag());
-    zMid_ = zMin + 0.5*thickness;
-
-    for (const point& p : pts)
-    {
-        if (mag(p.z() - zMin) > tol && mag(p.z() - bb.max().z()) > tol)
-        {
-            FatalErrorInFunction
-                << "The mesh in " << mesh.objectPath()
-                << " is not 2-D: point " << p << " is neither on z = " << zMin
-                << " nor on z = " << bb.max().z() << nl
-                << "Make it one cell thick in z (front and back patches empty)."
-                << exit(FatalError);
-        }
-    }
+    scalar tol = 0;
+    const scalar zBack = checkTwoD(tol);
 
     const polyBoundaryMesh& bm = mesh.boundaryMesh();
     if (patches.empty())
@@ -67,42 +128,7 @@ Foam::SPH::polyMeshWalls::polyMeshWalls
                 << bm.objectPath() << nl << "Patches: " << bm.names()
                 << exit(FatalError);
         }
-        const polyPatch& pp = bm[patchi];
-        // faceAreas() returns a SubField by value: keep it, not a reference
-        const vectorField::subField n = pp.faceAreas();
-        forAll(pp, facei)
-        {
-            // The two corners of the face in the back plane
-            DynamicList<vector2D> back;
-            for (const label pi : pp[facei])
-            {
-                if (mag(pts[pi].z() - zMin) <= tol)
-                {
-                    back.append(vector2D(pts[pi].x(), pts[pi].y()));
-                }
-            }
-            if (back.size() != 2)
-            {
-                continue;   // not a face across the thickness
-            }
-            // Face normals point out of the domain: fluid on the left of a->b
-            // means the left normal of (b - a) points against n
-            const vector2D t = back[1] - back[0];
-            const vector2D left(-t.y(), t.x());
-            wallChain c;
-            c.closed = false;
-            c.points.setSize(2);
-            const bool keep = (left.x()*n[facei].x() + left.y()*n[facei].y()) < 0;
-            c.points[0] = keep ? back[0] : back[1];
-            c.points[1] = keep ? back[1] : back[0];
-            chains_[i].append(c);
-        }
-        if (chains_[i].empty())
-        {
-            FatalErrorInFunction
-                << "Patch " << patchNames_[i] << " has no face across the 2-D"
-                << " mesh's thickness: it cannot be a wall" << exit(FatalError);
-        }
+        chains_[i] = patchChains(bm[patchi], zBack, tol);
     }
 }
 

@@ -147,6 +147,37 @@ Foam::label Foam::SPH::mlsInterpolation::stencils::count
 }
 
 
+Foam::SPH::mlsInterpolation::pointStatus
+Foam::SPH::mlsInterpolation::fit
+(
+    const UList<vector2D>& d,
+    const UList<scalar>& w,
+    List<scalar>& psi
+) const
+{
+    if (order_ == 2 && fitWeights<6>(d, w, minRcond_, psi))
+    {
+        return pointStatus::quadratic;
+    }
+    if (fitWeights<3>(d, w, minRcond_, psi))
+    {
+        return pointStatus::linear;
+    }
+
+    scalar sumW = 0;
+    for (const scalar wk : w)
+    {
+        sumW += wk;
+    }
+    psi.setSize(w.size());
+    forAll(w, k)
+    {
+        psi[k] = w[k]/sumW;
+    }
+    return pointStatus::constant;
+}
+
+
 Foam::SPH::mlsInterpolation::stencils
 Foam::SPH::mlsInterpolation::weights(const UList<vector2D>& points) const
 {
@@ -196,26 +227,7 @@ Foam::SPH::mlsInterpolation::weights(const UList<vector2D>& points) const
                 continue;
             }
 
-            // The highest order the stencil determines, down to Shepard
-            if (order_ == 2 && fitWeights<6>(d, w, minRcond_, psi))
-            {
-                st.status[i] = pointStatus::quadratic;
-            }
-            else if (fitWeights<3>(d, w, minRcond_, psi))
-            {
-                st.status[i] = pointStatus::linear;
-            }
-            else
-            {
-                scalar sumW = 0;
-                for (const scalar wk : w) sumW += wk;
-                psi.setSize(w.size());
-                forAll(w, k)
-                {
-                    psi[k] = w[k]/sumW;
-                }
-                st.status[i] = pointStatus::constant;
-            }
+            st.status[i] = fit(d, w, psi);
 
             forAll(nbr, k)
             {

@@ -122,6 +122,32 @@ bool collinear(const Foam::List<vector2D>& points)
 }
 
 
+//- True if edges i and j (i < j) of the closed polygon points share a point
+//  other than the corner that neighbouring edges have in common
+bool edgesMeet(const Foam::List<vector2D>& points, const label i, const label j)
+{
+    const label n = points.size();
+    const vector2D& a = points[i];
+    const vector2D& b = points[points.fcIndex(i)];
+    const vector2D& c = points[j];
+    const vector2D& d = points[points.fcIndex(j)];
+
+    if (j == i + 1)
+    {
+        // Neighbours share b (= c): they meet elsewhere only by folding
+        // back along one line
+        return orientation(a, b, d) == 0 && ((b - a) & (d - c)) < 0;
+    }
+    if (i == 0 && j == n - 1)
+    {
+        // Neighbours across the closing edge share a (= d)
+        return orientation(c, d, b) == 0 && ((d - c) & (b - a)) < 0;
+    }
+
+    return segmentsMeet(a, b, c, d);
+}
+
+
 //- Describe edge i of points for error messages: "edge i (a to b)"
 std::string edgeName(const Foam::List<vector2D>& points, const label i)
 {
@@ -175,33 +201,9 @@ Foam::string Foam::SPH::polygon::problem(const List<vector2D>& points)
 
     for (label i = 0; i < n; ++i)
     {
-        const vector2D& a = points[i];
-        const vector2D& b = points[points.fcIndex(i)];
-
         for (label j = i + 1; j < n; ++j)
         {
-            const vector2D& c = points[j];
-            const vector2D& d = points[points.fcIndex(j)];
-
-            bool meet = false;
-
-            if (j == i + 1)
-            {
-                // Neighbours share b (= c): they meet elsewhere only by
-                // folding back along one line
-                meet = orientation(a, b, d) == 0 && ((b - a) & (d - c)) < 0;
-            }
-            else if (i == 0 && j == n - 1)
-            {
-                // Neighbours across the closing edge share a (= d)
-                meet = orientation(c, d, b) == 0 && ((d - c) & (b - a)) < 0;
-            }
-            else
-            {
-                meet = segmentsMeet(a, b, c, d);
-            }
-
-            if (meet)
+            if (edgesMeet(points, i, j))
             {
                 msg << "self-intersecting polygon: "
                     << edgeName(points, i).c_str() << " and "
