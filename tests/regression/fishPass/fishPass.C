@@ -12,15 +12,19 @@ Description
     differences.dat. (wcsphFoam runs too once it has the RAS model; until
     then Allrun reports its refusal and goes on.)
 
-    Tolerances, measured 2026-12-02 (tutorial README):
-    - the mean velocity along the slot, U . (2,1)/sqrt(5) across it at
-      x = 8.5 b: FV 2.69 m/s, ISPH 3.15 m/s (+17 %); checked to 25 %, and
+    Tolerances, measured 2026-12-07 on the 45-degree slot (tutorial README;
+    on the 1:2 slot before it, 2026-12-02: slot FV 2.69, ISPH 3.15 m/s,
+    P1 max 11 %, P3 mean 5.6 %):
+    - the mean velocity along the slot, U . (1,1)/sqrt(2) across it at
+      x = 8.5 b: FV 2.58 m/s, ISPH 2.95 m/s (+14 %); checked to 25 %, and
       above 1.5 m/s for both (a flow that does not start, or a slot that
       the particles cannot pass, fails);
     - no particle lost (fluid particles of the first and the last file
       equal), k and epsilon positive and finite on every particle;
-    - |U| along P1 (2 b behind the slot): max difference to FV 11 % of
-      FV's peak; checked to 20 %; along P3 the mean 5.6 %, checked to 10 %.
+    - |U| along P1 (2 b behind the slot): max difference to FV 20 % of
+      FV's peak (the jet, still turning into the pool at 1 s, a fraction
+      of b apart), mean 4.5 %; checked to 30 % and 10 %; along P3 the mean
+      7.5 %, checked to 10 %.
 
 \*---------------------------------------------------------------------------*/
 
@@ -81,7 +85,8 @@ TEST(fishPassTutorial, isphKEpsilonFollowsFvThroughTheSlot)
     EXPECT_GT(std::stod(fv[10]), 0.0);
 
     const fileName diffs = results/"differences.dat";
-    EXPECT_LT(umagDifference(diffs, "P1").first, 0.20);
+    EXPECT_LT(umagDifference(diffs, "P1").first, 0.30);
+    EXPECT_LT(umagDifference(diffs, "P1").second, 0.10);
     EXPECT_LT(umagDifference(diffs, "P3").second, 0.10);
 
     EXPECT_TRUE(isFile(results/"sections_Umag.png"));

@@ -28,20 +28,27 @@ QUANTITIES = (("Umag", "|U| [m/s]"), ("Ux", "Ux [m/s]"), ("Uy", "Uy [m/s]"),
 # The sections in slot widths b (system/sections): start, end
 SECTIONS = {"P1": ((1, 0), (1, 8)), "P2": ((3.5, 0), (3.5, 8)),
             "P3": ((6, 0), (6, 8)), "P4": ((0, 0.1), (8, 0.1))}
-SLOT = ((8.5, 1.25), (8.5, 2.25))
-# The slot's direction (its sides slope 1:2)
-SLOT_DIRECTION = np.array([2.0, 1.0])/np.sqrt(5.0)
 
-# The fluid's outline in b (blockMeshDict): the pool less the baffles
-SOLIDS = [[(8, 0), (9, 0), (9, 1.5), (8, 1)],                   # short baffle
-          [(7, 2), (8, 2), (9, 2.5), (9, 8), (8, 8), (8, 3), (7, 3)]]  # long
+
+def slot_geometry(par):
+    """The slot's section (across it at mid-length x = 8.5 b), its
+    direction and the solids (the baffles, as the blockMeshDict cuts them
+    out of the pool), in b, from fishParameters' slotRise: the rise of the
+    slot's sides over its 1 b length."""
+    rise = par["slotRise"]
+    section = ((8.5, 1 + 0.5*rise), (8.5, 2 + 0.5*rise))
+    direction = np.array([1.0, rise])/np.hypot(1.0, rise)
+    solids = [[(8, 0), (9, 0), (9, 1 + rise), (8, 1)],          # short baffle
+              [(7, 2), (8, 2), (9, 2 + rise), (9, 8), (8, 8),  # long baffle
+               (8, 3), (7, 3)]]                                 # and its hook
+    return section, direction, solids
 
 
 def read_parameters(case):
     """The numeric 'key value;' entries of system/fishParameters."""
     return read_numeric_entries(
         os.path.join(case, "system", "fishParameters"),
-        ("b", "L", "B", "dr", "nb", "rho", "tEnd"))
+        ("b", "L", "B", "slotRise", "dr", "nb", "rho", "tEnd"))
 
 
 def read_log(case, app, time=None):
