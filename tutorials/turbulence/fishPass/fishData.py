@@ -153,6 +153,9 @@ def sph_last(case, time=None):
     if not files:
         raise RuntimeError("%s lists no files" % series)
     files = sorted(files, key=lambda f: float(f["time"]))
+    if time is None and len(files) == 1:
+        raise RuntimeError("%s: nothing written after the start (t = %s) yet"
+                           % (series, files[0]["time"]))
     last = files[pick_time([float(f["time"]) for f in files], time, series)]
     folder = os.path.dirname(series)
     return read_vtp(os.path.join(folder, files[0]["name"])), \
