@@ -215,6 +215,7 @@ using Switches = ScriptTest;
 using CleanFunctions = ScriptTest;
 using CloneCase = ScriptTest;
 using Bashrc = ScriptTest;
+using FishFunctions = ScriptTest;
 
 } // namespace
 
@@ -841,6 +842,41 @@ TEST_F(Bashrc, TutorialHeaderRunsUnderPosixShell)
     EXPECT_NE(bare.status, 0);
     EXPECT_TRUE(contains(bare.err, "source etc/bashrc first")) << bare.err;
     EXPECT_FALSE(fs::exists(case_ / "log.okApp"));
+}
+
+
+// * * * * * * * * * * * * * fishPass's setParameters * * * * * * * * * * * //
+
+// The fish-pass writes the FV cell counts from nb and the slot's rise;
+// a rise that would put the slot's bands out of order is refused by name
+TEST_F(FishFunctions, SetParametersSizesTheBandsAndRefusesABadSlotRise)
+{
+    const fs::path functions =
+        sourceDir / "tutorials/turbulence/fishPass/fishFunctions";
+    const auto parameters = [&](const std::string& rise)
+    {
+        writeFile(case_ / "system/fishParameters",
+            "b 0.3;\nslotRise " + rise + ";\nnb 1;\nnx0 1;\nn0 1;\nn1 1;\n"
+            "n2 1;\nn3 1;\ndr 1;\ntEnd 1;\n");
+    };
+
+    parameters("1");
+    auto r = sh(". " + quoted(functions) + "\nsetParameters . 10 0.03 20\n"
+        "echo \"status=$?\"\nparameter n0 system/fishParameters");
+    EXPECT_EQ(valueOf(r.out, "status"), "0") << r.err;
+    // The band below the slot, 1 b high at x = 7 b and 2 b at x = 9 b
+    EXPECT_EQ(lines(r.out).back(), "15") << r.out;
+    EXPECT_TRUE(contains(readFile(case_ / "system/fishParameters"), "dr              0.03;"));
+
+    for (const std::string bad : {"-1", "5.5", "steep"})
+    {
+        parameters(bad);
+        r = sh(". " + quoted(functions) + "\nsetParameters . 10 0.03 20\n"
+            "echo \"status=$?\"");
+        EXPECT_EQ(valueOf(r.out, "status"), "1") << bad;
+        EXPECT_TRUE(contains(r.err, "slotRise " + bad + ": expected a number above -1"))
+            << r.err;
+    }
 }
 
 
