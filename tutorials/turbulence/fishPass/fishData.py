@@ -57,13 +57,18 @@ def read_log(case, app, time=None):
     return read_solver_log(os.path.join(case, "log." + app), until=time)
 
 
+def same_time(t, time):
+    """t is time, to 1e-6 relative (time names round their values)."""
+    return abs(t - time) <= 1e-6*max(abs(time), 1.0)
+
+
 def pick_time(times, time, where):
     """Index in times (ascending) to read: the last, or the one equal to
-    time (within 1e-6 relative)."""
+    time."""
     if time is None:
         return len(times) - 1
     for i, t in enumerate(times):
-        if abs(t - time) <= 1e-6*max(abs(time), 1.0):
+        if same_time(t, time):
             return i
     raise RuntimeError("%s: nothing written at t = %g (written: %s)"
                        % (where, time, " ".join("%g" % t for t in times)))
