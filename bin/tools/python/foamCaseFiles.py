@@ -40,18 +40,21 @@ def read_numeric_entries(path, required=()):
 
 
 def read_log(path, until=None):
-    """{cpu, clock, t, steps, end} of a solver log: the last
+    """{cpu, clock, t, steps, end, start} of a solver log: the last
     ExecutionTime/ClockTime, the last 'Time =', the number of steps (an SPH
     solver's 'Steps N' summary, the step a failure names, else the count
-    of 'Time =' lines) and whether it reached 'End'; NaN where missing.
+    of 'Time =' lines), whether it reached 'End', and the time it started
+    from (an SPH solver's 'Restarting from ".../<time>/lagrangian/...', else
+    0: the seconds and steps are then from there); NaN where missing.
     With until: only the log up to that time (the steps are then None: an
     SPH solver logs every logInterval steps)."""
-    out = {"cpu": nan, "clock": nan, "t": nan, "steps": 0, "end": False}
+    out = {"cpu": nan, "clock": nan, "t": nan, "steps": 0, "end": False, "start": 0.0}
     if not os.path.isfile(path):
         return out
     timing = re.compile(r"^ExecutionTime = (\S+) s\s+ClockTime = (\S+) s")
     steps = re.compile(r"^Steps (\d+),")
     failedAt = re.compile(r"\(time step (\d+), deltaT")
+    restart = re.compile(r'^Restarting from ".*/([^/]+)/lagrangian/')
     with open(path, errors="replace") as f:
         for line in f:
             m = timing.match(line)
@@ -73,6 +76,11 @@ def read_log(path, until=None):
                 out["sphSteps"] = int(failedAt.search(line).group(1))
             elif line.startswith("End"):
                 out["end"] = True
+            elif restart.match(line):
+                try:
+                    out["start"] = float(restart.match(line).group(1))
+                except ValueError:
+                    pass
     if "sphSteps" in out:
         out["steps"] = out.pop("sphSteps")
     return out
