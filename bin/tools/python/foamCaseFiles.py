@@ -13,6 +13,7 @@ etc/bashrc) or, run from the project's own tutorials, by its path:
 """
 import os
 import re
+import sys
 
 nan = float("nan")
 
@@ -45,7 +46,8 @@ def read_log(path, until=None):
     solver's 'Steps N' summary, the step a failure names, else the count
     of 'Time =' lines), whether it reached 'End', and the time it started
     from (an SPH solver's 'Restarting from ".../<time>/lagrangian/...', else
-    0: the seconds and steps are then from there); NaN where missing.
+    0); NaN where missing. A log that restarts says so on stderr: its
+    seconds and steps are from the restart, the earlier leg's log unread.
     With until: only the log up to that time (the steps are then None: an
     SPH solver logs every logInterval steps)."""
     out = {"cpu": nan, "clock": nan, "t": nan, "steps": 0, "end": False, "start": 0.0}
@@ -54,7 +56,7 @@ def read_log(path, until=None):
     timing = re.compile(r"^ExecutionTime = (\S+) s\s+ClockTime = (\S+) s")
     steps = re.compile(r"^Steps (\d+),")
     failedAt = re.compile(r"\(time step (\d+), deltaT")
-    restart = re.compile(r'^Restarting from ".*/([^/]+)/lagrangian/')
+    restart = re.compile(r'^Restarting from ".*/([-+.0-9eE]+)/lagrangian/')
     with open(path, errors="replace") as f:
         for line in f:
             m = timing.match(line)
@@ -77,10 +79,10 @@ def read_log(path, until=None):
             elif line.startswith("End"):
                 out["end"] = True
             elif restart.match(line):
-                try:
-                    out["start"] = float(restart.match(line).group(1))
-                except ValueError:
-                    pass
+                out["start"] = float(restart.match(line).group(1))
+    if out["start"] > 0:
+        print("%s: restarts at t = %g s: its CPU and clock seconds and steps"
+              " are from there" % (path, out["start"]), file=sys.stderr)
     if "sphSteps" in out:
         out["steps"] = out.pop("sphSteps")
     return out
