@@ -20,7 +20,9 @@ Description
     A second test: errors.csv files with a wrong header, a value that is
     not a number and a short row are each refused naming the file, the
     line and what is wrong (1 s). A third: the page sums the solver seconds
-    of the runs it shows, each run once, from their errors.csv rows.
+    of the runs it shows, each run once, from their errors.csv rows. A
+    fourth: a full form killed part-way goes on when run again, the killed
+    solver log kept aside, and is reused once it has ended.
 
 \*---------------------------------------------------------------------------*/
 
@@ -169,6 +171,68 @@ TEST(allreport, aBadErrorsCsvNamesTheFileLineAndEntry)
     EXPECT_NE(sphTest::run(read + dir/"fields"/"errors.csv" + " 2>&1", out), 0);
     EXPECT_NE(out.find("errors.csv: line 2: 6 fields, expected 9"), std::string::npos)
         << out;
+}
+
+
+TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
+{
+    // The full form runs for hours: a machine restart part-way leaves a
+    // tutorial with some runs and a solver log without End. Run again, the
+    // report must not take those as finished runs (nor a stale errors.csv
+    // as the tutorial's): it sets the killed log aside (kept) and runs the
+    // tutorial's full form again. A project folder of links and one short
+    // tutorial stands in for the project.
+    const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"allreportResume";
+    rmDir(dir);
+    const fileName tank = dir/"tutorials"/"isph"/"hydrostaticTank";
+    const std::string src(SPHFOAM_SOURCE_DIR);
+    std::string out;
+    ASSERT_EQ
+    (
+        sphTest::run
+        (
+            "mkdir -p " + tank.path() + " && cp " + src + "/Allreport " + dir
+          + " && ln -s " + src + "/etc " + src + "/bin " + dir
+          + " && cp -r " + src + "/tutorials/isph/hydrostaticTank " + tank.path()
+          + " && cd " + tank + " && sed -i 's/^endTime .*/endTime 0.5;/' system/controlDict",
+            out
+        ),
+        0
+    ) << out;
+    const std::string killedLog =
+        "Exec   : isphFoam\nStarting time loop\n\nTime = 0.0125\n";
+    sphTest::writeFile(tank/"log.isphFoam", killedLog);
+    // Without the file below, this errors.csv would be reused as the case's
+    sphTest::writeFile
+    (
+        tank/"errors.csv",
+        "case,method,resolution,particles,measure,value,reference,wallSeconds,cpuSeconds\n"
+    );
+    sphTest::writeFile(tank/"log.Allreport.inProgress", "2026-12-07 04:00:00 (pid 1)\n");
+
+    const int status = sphTest::run
+    (
+        "cd " + dir + " && ./Allreport -cases isphTank -out " + dir/"report", out
+    );
+    ASSERT_EQ(status, 0) << out;
+    EXPECT_NE(out.find("isphTank: the full form begun 2026-12-07 04:00:00 (pid 1) did not end"),
+        std::string::npos) << out;
+    EXPECT_NE(out.find("log.isphFoam has no End (the run was killed): moved to "
+        "log.isphFoam.unfinished"), std::string::npos) << out;
+    EXPECT_EQ(readAll(tank/"log.isphFoam.unfinished"), killedLog);
+    EXPECT_NE(readAll(tank/"log.isphFoam").find("\nEnd\n"), std::string::npos);
+    EXPECT_FALSE(isFile(tank/"log.Allreport.inProgress"));
+    EXPECT_NE(readAll(dir/"report"/"runs.tsv").find("\tran\t"), std::string::npos);
+    EXPECT_NE(readAll(tank/"errors.csv").find("hydrostaticTank,ISPH-USAW"), std::string::npos)
+        << readAll(tank/"errors.csv");
+
+    // Once the full form has ended, the next report reuses it
+    ASSERT_EQ
+    (
+        sphTest::run("cd " + dir + " && ./Allreport -cases isphTank -out " + dir/"report", out),
+        0
+    ) << out;
+    EXPECT_NE(out.find("isphTank: reusing its errors.csv"), std::string::npos) << out;
 }
 
 

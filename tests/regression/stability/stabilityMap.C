@@ -10,7 +10,8 @@ Description
     on purpose must stop loudly, naming the solver settings; with
     stopIfNotConverged no it must run; the large time steps with
     retryOnFailure must count their retries; the still tanks at rest for
-    2 t sqrt(g/H) must stay hydrostatic within 5 % of rho g H.
+    2 t sqrt(g/H) must stay hydrostatic within 5 % of rho g H. A second
+    test: -resume reuses the rows that ended and runs the killed one again.
 
 \*---------------------------------------------------------------------------*/
 
@@ -116,6 +117,39 @@ TEST(stabilityMap, quickFormHasNoSilentFailure)
         ASSERT_EQ(rows.at(tank).at("outcome"), "ran") << tank;
         EXPECT_LT(std::stod(rows.at(tank).at("error")), 0.05) << tank;
     }
+}
+
+
+TEST(stabilityMap, resumeRunsOnlyTheRowsThatDidNotEnd)
+{
+    // The full map runs for hours: -resume reuses each row whose run ended
+    // (its outcome.json) and runs again the one that was killed (none)
+    const fileName dir = sphTest::copyTutorial("stability", "stabilityResume");
+    rmDir(dir/"runs");
+    const std::string rows = " -quick -only viscousTank_isph hardSolve_isph -resume";
+    std::string first, second;
+    ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun" + rows, first), 0) << first;
+    EXPECT_EQ(first.find("reusing its outcome"), std::string::npos) << first;
+    const auto before = readTable(dir/"results"/"stability.csv");
+
+    // The second row as a killed run leaves it: its outcome never written
+    rm(dir/"runs"/"quick"/"hardSolve_isph"/"outcome.json");
+    ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun" + rows, second), 0) << second;
+    EXPECT_NE
+    (
+        second.find("viscousTank_isph/outcome.json"), std::string::npos
+    ) << second;
+    EXPECT_EQ(second.find("hardSolve_isph/outcome.json"), std::string::npos) << second;
+    EXPECT_TRUE(isFile(dir/"runs"/"quick"/"hardSolve_isph"/"outcome.json"));
+
+    const auto after = readTable(dir/"results"/"stability.csv");
+    ASSERT_EQ(after.size(), 2u);
+    for (const auto& [name, r] : before)
+    {
+        EXPECT_EQ(after.at(name).at("outcome"), r.at("outcome")) << name;
+        EXPECT_EQ(after.at(name).at("cause"), r.at("cause")) << name;
+    }
+    EXPECT_EQ(after.at("viscousTank_isph").at("error"), before.at("viscousTank_isph").at("error"));
 }
 
 
