@@ -72,17 +72,18 @@ def read_log(path, until=None):
                     return out
                 out["steps"] += 1
                 out["t"] = t
-            elif steps.match(line):
-                out["sphSteps"] = int(steps.match(line).group(1))
-            elif failedAt.search(line):
-                out["sphSteps"] = int(failedAt.search(line).group(1))
+            elif m := steps.match(line):
+                out["sphSteps"] = int(m.group(1))
+            elif m := failedAt.search(line):
+                out["sphSteps"] = int(m.group(1))
             elif line.startswith("End"):
                 out["end"] = True
-            elif restart.match(line):
-                out["start"] = float(restart.match(line).group(1))
-    if out["start"] > 0:
-        print("%s: restarts at t = %g s: its CPU and clock seconds and steps"
-              " are from there" % (path, out["start"]), file=sys.stderr)
+            elif m := restart.match(line):
+                out["start"] = float(m.group(1))
+                if out["start"] > 0:
+                    print("%s: restarts at t = %g s: its CPU and clock seconds"
+                          " and steps are from there" % (path, out["start"]),
+                          file=sys.stderr)
     if "sphSteps" in out:
         out["steps"] = out.pop("sphSteps")
     return out
