@@ -22,7 +22,8 @@ Description
     line and what is wrong (1 s). A third: the page sums the solver seconds
     of the runs it shows, each run once, from their errors.csv rows. A
     fourth: a full form killed part-way goes on when run again, the killed
-    solver log kept aside, and is reused once it has ended.
+    solver log kept aside beside an earlier kill's, and is reused once it
+    has ended.
 
 \*---------------------------------------------------------------------------*/
 
@@ -202,6 +203,9 @@ TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
     const std::string killedLog =
         "Exec   : isphFoam\nStarting time loop\n\nTime = 0.0125\n";
     sphTest::writeFile(tank/"log.isphFoam", killedLog);
+    // The log of a kill before that one, set aside then: it must stay
+    const std::string earlierLog = "Exec   : isphFoam\nStarting time loop\n";
+    sphTest::writeFile(tank/"log.isphFoam.unfinished", earlierLog);
     // Without the file below, this errors.csv would be reused as the case's
     sphTest::writeFile
     (
@@ -218,8 +222,9 @@ TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
     EXPECT_NE(out.find("isphTank: the full form begun 2026-12-07 04:00:00 (pid 1) did not end"),
         std::string::npos) << out;
     EXPECT_NE(out.find("log.isphFoam has no End (the run was killed): moved to "
-        "log.isphFoam.unfinished"), std::string::npos) << out;
-    EXPECT_EQ(readAll(tank/"log.isphFoam.unfinished"), killedLog);
+        "log.isphFoam.unfinished1"), std::string::npos) << out;
+    EXPECT_EQ(readAll(tank/"log.isphFoam.unfinished1"), killedLog);
+    EXPECT_EQ(readAll(tank/"log.isphFoam.unfinished"), earlierLog);
     EXPECT_NE(readAll(tank/"log.isphFoam").find("\nEnd\n"), std::string::npos);
     EXPECT_FALSE(isFile(tank/"log.Allreport.inProgress"));
     EXPECT_NE(readAll(dir/"report"/"runs.tsv").find("\tran\t"), std::string::npos);
