@@ -46,10 +46,12 @@ def read_log(path, until=None):
     solver's 'Steps N' summary, the step a failure names, else the count
     of 'Time =' lines), whether it reached 'End', and the time it started
     from (an SPH solver's 'Restarting from ".../<time>/lagrangian/...', else
-    0); NaN where missing. A log that restarts says so on stderr: its
-    seconds and steps are from the restart, the earlier leg's log unread.
-    With until: only the log up to that time (the steps are then None: an
-    SPH solver logs every logInterval steps)."""
+    0); NaN where missing. A log that restarts adds the legs before it
+    (earlier_legs) when their logs were kept beside it as
+    log.<app>.unfinished[N] (Allreport keeps a killed run's log so), and
+    says on stderr when it cannot: its seconds and steps are then from the
+    restart. With until: only the log up to that time (the steps are then
+    None: an SPH solver logs every logInterval steps)."""
     out = {"cpu": nan, "clock": nan, "t": nan, "steps": 0, "end": False, "start": 0.0}
     if not os.path.isfile(path):
         return out
@@ -69,7 +71,8 @@ def read_log(path, until=None):
                     t = out["t"]
                 if until is not None and t > until*(1 + 1e-9) + 1e-12:
                     out["steps"] = None
-                    return out
+                    out.pop("sphSteps", None)
+                    break
                 out["steps"] += 1
                 out["t"] = t
             elif m := steps.match(line):
@@ -80,13 +83,56 @@ def read_log(path, until=None):
                 out["end"] = True
             elif m := restart.match(line):
                 out["start"] = float(m.group(1))
-                if out["start"] > 0:
-                    print("%s: restarts at t = %g s: its CPU and clock seconds"
-                          " and steps are from there" % (path, out["start"]),
-                          file=sys.stderr)
     if "sphSteps" in out:
         out["steps"] = out.pop("sphSteps")
+    if out["start"] > 0:
+        add_earlier_legs(path, out)
     return out
+
+
+def add_earlier_legs(path, out):
+    """Adds to out (read_log's summary of a log that restarts at
+    out["start"]) the seconds of the legs before it, from the kept logs
+    beside it (<log>.unfinished[N], older than it) that reached the
+    restart time: each up to that time, and its own earlier legs. The
+    steps become the restart time's index (uniform/time) plus the log's
+    own. Without such a log it says on stderr that its figures are from
+    the restart."""
+    base = re.sub(r"\.unfinished\d*$", "", path)
+    folder = os.path.dirname(path) or "."
+    mtime = os.path.getmtime(path)
+    kept = [os.path.join(folder, f) for f in os.listdir(folder)
+            if re.fullmatch(re.escape(os.path.basename(base)) + r"\.unfinished\d*", f)]
+    kept = sorted((k for k in kept if os.path.getmtime(k) < mtime),
+                  key=os.path.getmtime, reverse=True)
+    for leg in kept:
+        whole = read_log(leg)
+        if whole["start"] < out["start"] and whole["t"] >= out["start"]*(1 - 1e-9):
+            before = read_log(leg, until=out["start"])
+            if before["cpu"] == before["cpu"]:
+                out["cpu"] += before["cpu"]
+                out["clock"] += before["clock"]
+                index = read_time_index(folder, out["start"])
+                if index is not None and out["steps"] is not None:
+                    out["steps"] += index
+                out["legs"] = 1 + before.get("legs", 1)
+                return
+    print("%s: restarts at t = %g s: its CPU and clock seconds and steps are"
+          " from there (no kept log of the run before it)" % (path, out["start"]),
+          file=sys.stderr)
+
+
+def read_time_index(case, t):
+    """The time index (steps from the start) of the written time t of a
+    case, from its uniform/time; None without one."""
+    for name in time_dirs(case):
+        if abs(float(name) - t) <= 1e-9*max(abs(t), 1e-300):
+            f = os.path.join(case, name, "uniform", "time")
+            if os.path.isfile(f):
+                m = re.search(r"^index\s+(\d+)\s*;", open(f).read(), flags=re.M)
+                if m:
+                    return int(m.group(1))
+    return None
 
 
 def time_dirs(path):

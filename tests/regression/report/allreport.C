@@ -22,8 +22,8 @@ Description
     line and what is wrong (1 s). A third: the page sums the solver seconds
     of the runs it shows, each run once, from their errors.csv rows. A
     fourth: a full form killed part-way goes on when run again, the killed
-    solver log kept aside beside an earlier kill's, and is reused once it
-    has ended.
+    solver log kept aside beside an earlier kill's and its run continued
+    from its latest complete write, and is reused once it has ended.
 
 \*---------------------------------------------------------------------------*/
 
@@ -177,16 +177,21 @@ TEST(allreport, aBadErrorsCsvNamesTheFileLineAndEntry)
 
 TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
 {
-    // The full form runs for hours: a machine restart part-way leaves a
-    // tutorial with some runs and a solver log without End. Run again, the
-    // report must not take those as finished runs (nor a stale errors.csv
-    // as the tutorial's): it sets the killed log aside (kept) and runs the
-    // tutorial's full form again. A project folder of links and one short
-    // tutorial stands in for the project.
+    // The full form runs for hours and the machine ends processes (a
+    // restart, the end of a session): a tutorial is left with some runs
+    // and a solver log without End. Run again, the report must not take
+    // those as finished runs (nor a stale errors.csv as the tutorial's): it
+    // sets the killed log aside (kept) and runs the tutorial's full form
+    // again, the killed run going on from its latest complete write (a run
+    // longer than the time between kills would otherwise never end). A
+    // project folder of links and one short tutorial stands in for the
+    // project; its run to 0.3 s, its End cut off and a 0.4 written in part
+    // are what a kill at 0.4 s leaves.
     const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"allreportResume";
     rmDir(dir);
     const fileName tank = dir/"tutorials"/"isph"/"hydrostaticTank";
     const std::string src(SPHFOAM_SOURCE_DIR);
+    const std::string apps(std::string(SPHFOAM_BINARY_DIR) + "/applications/");
     std::string out;
     ASSERT_EQ
     (
@@ -195,13 +200,19 @@ TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
             "mkdir -p " + tank.path() + " && cp " + src + "/Allreport " + dir
           + " && ln -s " + src + "/etc " + src + "/bin " + dir
           + " && cp -r " + src + "/tutorials/isph/hydrostaticTank " + tank.path()
-          + " && cd " + tank + " && sed -i 's/^endTime .*/endTime 0.5;/' system/controlDict",
+          + " && cd " + tank + " && sed -i -e 's/^endTime .*/endTime 0.3;/'"
+            " -e 's/^writeInterval .*/writeInterval 0.1;/' system/controlDict"
+            " && " + apps + "sphMesh > log.sphMesh 2>&1"
+            " && OMP_NUM_THREADS=1 " + apps + "isphFoam > log.isphFoam 2>&1"
+            " && sed -i 's/^endTime .*/endTime 0.5;/' system/controlDict"
+            " && mkdir -p 0.4/uniform",
             out
         ),
         0
     ) << out;
-    const std::string killedLog =
-        "Exec   : isphFoam\nStarting time loop\n\nTime = 0.0125\n";
+    std::string killedLog = readAll(tank/"log.isphFoam");
+    ASSERT_NE(killedLog.find("\nEnd\n"), std::string::npos) << killedLog;
+    killedLog.erase(killedLog.find("\nEnd\n") + 1);
     sphTest::writeFile(tank/"log.isphFoam", killedLog);
     // The log of a kill before that one, set aside then: it must stay
     const std::string earlierLog = "Exec   : isphFoam\nStarting time loop\n";
@@ -223,13 +234,37 @@ TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
         std::string::npos) << out;
     EXPECT_NE(out.find("log.isphFoam has no End (the run was killed): moved to "
         "log.isphFoam.unfinished1"), std::string::npos) << out;
+    EXPECT_NE(out.find("hydrostaticTank: it goes on from its latest time, 0.3 "
+        "(startFrom latestTime)"), std::string::npos) << out;
     EXPECT_EQ(readAll(tank/"log.isphFoam.unfinished1"), killedLog);
     EXPECT_EQ(readAll(tank/"log.isphFoam.unfinished"), earlierLog);
-    EXPECT_NE(readAll(tank/"log.isphFoam").find("\nEnd\n"), std::string::npos);
+    const std::string resumed = readAll(tank/"log.isphFoam");
+    EXPECT_NE(resumed.find("Skipping the incomplete time directory"), std::string::npos)
+        << resumed;
+    EXPECT_NE(resumed.find("Restarting from \"" + tank + "/0.3/lagrangian/sph\""),
+        std::string::npos) << resumed;
+    EXPECT_NE(resumed.find("\nEnd\n"), std::string::npos);
+    EXPECT_TRUE(isFile(tank/"0.5"/"lagrangian"/"sph"/"positions"));
     EXPECT_FALSE(isFile(tank/"log.Allreport.inProgress"));
     EXPECT_NE(readAll(dir/"report"/"runs.tsv").find("\tran\t"), std::string::npos);
     EXPECT_NE(readAll(tank/"errors.csv").find("hydrostaticTank,ISPH-USAW"), std::string::npos)
         << readAll(tank/"errors.csv");
+
+    // The compare scripts' log reader adds the killed leg (kept beside the
+    // log) up to the restart: the steps from 0, the CPU of both legs
+    ASSERT_EQ
+    (
+        sphTest::run
+        (
+            "cd " + tank + " && " + SPHFOAM_PYTHON + " -c 'import sys; sys.path.insert(0, \""
+          + src + "/bin/tools/python\"); import foamCaseFiles as f; "
+            "a = f.read_log(\"log.isphFoam.unfinished1\"); b = f.read_log(\"log.isphFoam\"); "
+            "print(b[\"legs\"], b[\"steps\"] > a[\"steps\"], b[\"cpu\"] > a[\"cpu\"] > 0)' 2>&1",
+            out
+        ),
+        0
+    ) << out;
+    EXPECT_EQ(out, "2 True True\n");
 
     // Once the full form has ended, the next report reuses it
     ASSERT_EQ
