@@ -46,8 +46,10 @@ def read_log(path, until=None):
     solver's 'Steps N' summary, the step a failure names, else the count
     of 'Time =' lines), whether it reached 'End', and the time it started
     from (an SPH solver's 'Restarting from ".../<time>/lagrangian/...', else
-    0); NaN where missing. A log that restarts adds the legs before it
-    (earlier_legs) when their logs were kept beside it as
+    0; of an OpenFOAM solver, whose log does not say, the written time
+    before its first step when a killed leg's log is kept beside it);
+    NaN where missing. A log that restarts adds the legs before it
+    (add_earlier_legs) when their logs were kept beside it as
     log.<app>.unfinished[N] (Allreport keeps a killed run's log so), and
     says on stderr when it cannot: its seconds and steps are then from the
     restart. With until: only the log up to that time (the steps are then
@@ -59,6 +61,7 @@ def read_log(path, until=None):
     steps = re.compile(r"^Steps (\d+),")
     failedAt = re.compile(r"\(time step (\d+), deltaT")
     restart = re.compile(r'^Restarting from ".*/([-+.0-9eE]+)/lagrangian/')
+    first = None
     with open(path, errors="replace") as f:
         for line in f:
             m = timing.match(line)
@@ -75,6 +78,7 @@ def read_log(path, until=None):
                     break
                 out["steps"] += 1
                 out["t"] = t
+                first = t if first is None else first
             elif m := steps.match(line):
                 out["sphSteps"] = int(m.group(1))
             elif m := failedAt.search(line):
@@ -85,9 +89,27 @@ def read_log(path, until=None):
                 out["start"] = float(m.group(1))
     if "sphSteps" in out:
         out["steps"] = out.pop("sphSteps")
+    if out["start"] == 0 and first is not None and kept_logs(path):
+        # An OpenFOAM solver says nothing of where it started: the written
+        # time before its first step, when a killed leg's log is kept
+        folder = os.path.dirname(path) or "."
+        before = [float(n) for n in time_dirs(folder) if float(n) < first*(1 - 1e-9)]
+        out["start"] = max(before, default=0.0)
     if out["start"] > 0:
         add_earlier_legs(path, out)
     return out
+
+
+def kept_logs(path):
+    """The killed legs' logs kept beside a log (<log>.unfinished[N], as
+    Allreport keeps them) older than it, newest first."""
+    base = re.sub(r"\.unfinished\d*$", "", path)
+    folder = os.path.dirname(path) or "."
+    mtime = os.path.getmtime(path)
+    kept = [os.path.join(folder, f) for f in os.listdir(folder)
+            if re.fullmatch(re.escape(os.path.basename(base)) + r"\.unfinished\d*", f)]
+    return sorted((k for k in kept if os.path.getmtime(k) < mtime),
+                  key=os.path.getmtime, reverse=True)
 
 
 def add_earlier_legs(path, out):
@@ -98,14 +120,8 @@ def add_earlier_legs(path, out):
     steps become the restart time's index (uniform/time) plus the log's
     own. Without such a log it says on stderr that its figures are from
     the restart."""
-    base = re.sub(r"\.unfinished\d*$", "", path)
     folder = os.path.dirname(path) or "."
-    mtime = os.path.getmtime(path)
-    kept = [os.path.join(folder, f) for f in os.listdir(folder)
-            if re.fullmatch(re.escape(os.path.basename(base)) + r"\.unfinished\d*", f)]
-    kept = sorted((k for k in kept if os.path.getmtime(k) < mtime),
-                  key=os.path.getmtime, reverse=True)
-    for leg in kept:
+    for leg in kept_logs(path):
         whole = read_log(leg)
         if whole["start"] < out["start"] and whole["t"] >= out["start"]*(1 - 1e-9):
             before = read_log(leg, until=out["start"])

@@ -276,6 +276,41 @@ TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
 }
 
 
+TEST(allreport, theKilledLegsOfAnOpenFOAMRunAreCounted)
+{
+    // An OpenFOAM solver's log does not say where it started: continued
+    // from its latest write after a kill (its killed log kept beside it,
+    // as Allreport does), the compare scripts' reader takes the written
+    // time before its first step as the restart and adds the killed leg up
+    // to there. icoFoam's cavity, 60 steps, written every 20, killed at
+    // step 49 (0.245 s) and continued from 0.2: 20 steps + the 40 before
+    const fileName dir = fileName(SPHFOAM_BINARY_DIR)/"tests"/"cases"/"readLogLegs";
+    rmDir(dir);
+    std::string out;
+    ASSERT_EQ
+    (
+        sphTest::run
+        (
+            "cp -r /usr/share/doc/openfoam-examples/examples/incompressible/icoFoam/cavity/cavity "
+          + dir + " && cd " + dir + " && blockMesh > log.blockMesh 2>&1"
+            " && sed -i -e 's/^endTime .*/endTime 0.3;/' -e 's/^writeInterval .*/writeInterval 20;/'"
+            " system/controlDict && icoFoam > log.icoFoam 2>&1"
+            " && sed -n '1,/^Time = 0.25$/p' log.icoFoam | sed '$d' > log.icoFoam.unfinished"
+            " && rm -r 0.3 log.icoFoam && touch -d '1 minute ago' log.icoFoam.unfinished"
+            " && sed -i 's/^startFrom .*/startFrom latestTime;/' system/controlDict"
+            " && icoFoam > log.icoFoam 2>&1 && " + std::string(SPHFOAM_PYTHON)
+          + " -c 'import sys; sys.path.insert(0, \"" SPHFOAM_SOURCE_DIR "/bin/tools/python\");"
+            " import foamCaseFiles as f; a = f.read_log(\"log.icoFoam.unfinished\");"
+            " b = f.read_log(\"log.icoFoam\");"
+            " print(a[\"steps\"], b[\"start\"], b[\"steps\"], b[\"legs\"], b[\"end\"])' 2>&1",
+            out
+        ),
+        0
+    ) << out;
+    EXPECT_EQ(out, "49 0.2 60 2 True\n");
+}
+
+
 TEST(allreport, thePageSaysWhatTheRunsItShowsCost)
 {
     // The full form reuses finished runs, so its own time says nothing of
