@@ -245,6 +245,11 @@ TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
         std::string::npos) << resumed;
     EXPECT_NE(resumed.find("\nEnd\n"), std::string::npos);
     EXPECT_TRUE(isFile(tank/"0.5"/"lagrangian"/"sph"/"positions"));
+    // The tutorial's own controlDict (in the repository) is as it was
+    const std::string dict = readAll(tank/"system"/"controlDict");
+    EXPECT_NE(dict.find("\nstartFrom       startTime;"), std::string::npos) << dict;
+    EXPECT_EQ(dict.find("skipIncompleteTimes"), std::string::npos) << dict;
+    EXPECT_FALSE(isFile(tank/"log.Allreport.continued"));
     EXPECT_FALSE(isFile(tank/"log.Allreport.inProgress"));
     EXPECT_NE(readAll(dir/"report"/"runs.tsv").find("\tran\t"), std::string::npos);
     EXPECT_NE(readAll(tank/"errors.csv").find("hydrostaticTank,ISPH-USAW"), std::string::npos)
