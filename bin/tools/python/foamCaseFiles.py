@@ -89,13 +89,17 @@ def read_log(path, until=None):
                 out["start"] = float(m.group(1))
     if "sphSteps" in out:
         out["steps"] = out.pop("sphSteps")
-    if out["start"] == 0 and first is not None and kept_logs(path):
+    if out["start"] == 0 and kept_logs(path):
         # An OpenFOAM solver says nothing of where it started: the written
-        # time before its first step, when a killed leg's log is kept
+        # time before its first step, when a killed leg's log is kept (a
+        # leg without a step started at the latest written time)
         folder = os.path.dirname(path) or "."
-        before = [float(n) for n in time_dirs(folder) if float(n) < first*(1 - 1e-9)]
+        before = [float(n) for n in time_dirs(folder)
+                  if first is None or float(n) < first*(1 - 1e-9)]
         out["start"] = max(before, default=0.0)
     if out["start"] > 0:
+        if out["t"] != out["t"]:
+            out["t"] = out["start"]         # no step taken: still there
         add_earlier_legs(path, out)
     return out
 
@@ -126,8 +130,12 @@ def add_earlier_legs(path, out):
         if whole["start"] < out["start"] and whole["t"] >= out["start"]*(1 - 1e-9):
             before = read_log(leg, until=out["start"])
             if before["cpu"] == before["cpu"]:
-                out["cpu"] += before["cpu"]
-                out["clock"] += before["clock"]
+                # A leg that started at its end time (killed after its last
+                # write, before End) takes no step and prints no seconds
+                for key in ("cpu", "clock"):
+                    if out[key] != out[key] and out["end"]:
+                        out[key] = 0.0
+                    out[key] += before[key]
                 index = read_time_index(folder, out["start"])
                 if index is not None and out["steps"] is not None:
                     out["steps"] += index

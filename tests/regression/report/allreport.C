@@ -313,6 +313,26 @@ TEST(allreport, theKilledLegsOfAnOpenFOAMRunAreCounted)
         0
     ) << out;
     EXPECT_EQ(out, "49 0.2 60 2 True\n");
+
+    // Killed after its last write, before End: continued, it starts at
+    // its end time and takes no step (no 'Time =', no seconds): the run is
+    // the killed leg's, 60 steps at 0.3 s
+    ASSERT_EQ
+    (
+        sphTest::run
+        (
+            "cd " + dir + " && sed '/^End/d' log.icoFoam > log.icoFoam.unfinished1"
+            " && touch -d '30 seconds ago' log.icoFoam.unfinished1 && icoFoam > log.icoFoam 2>&1"
+            " && " + std::string(SPHFOAM_PYTHON)
+          + " -c 'import sys; sys.path.insert(0, \"" SPHFOAM_SOURCE_DIR "/bin/tools/python\");"
+            " import foamCaseFiles as f; a = f.read_log(\"log.icoFoam.unfinished1\");"
+            " b = f.read_log(\"log.icoFoam\");"
+            " print(b[\"start\"], b[\"t\"], b[\"steps\"], b[\"cpu\"] == a[\"cpu\"], b[\"end\"])' 2>&1",
+            out
+        ),
+        0
+    ) << out;
+    EXPECT_EQ(out, "0.3 0.3 60 True True\n");
 }
 
 
