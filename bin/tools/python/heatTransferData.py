@@ -20,7 +20,7 @@ import warnings
 
 import numpy as np
 
-from foamCaseFiles import read_internal_field
+from foamCaseFiles import read_internal_field, read_log
 
 
 def time_dirs(case):
@@ -101,23 +101,19 @@ def check_balance(case, nuIn, nuOut, tolerance=1e-3):
 
 
 def execution_time(log):
-    """The last ExecutionTime (CPU s) of an OpenFOAM log, or nan."""
-    value = float("nan")
-    if not os.path.isfile(log):
-        return value
-    with open(log) as f:
-        for line in f:
-            if line.startswith("ExecutionTime"):
-                value = float(line.split()[2])
-    return value
+    """The CPU seconds of an OpenFOAM log (its last ExecutionTime, the legs
+    of a run continued after a kill added: foamCaseFiles.read_log), or
+    nan."""
+    return read_log(log)["cpu"]
 
 
 def iterations(log):
-    """The number of 'Time =' lines of an OpenFOAM log."""
+    """The time steps (SIMPLE iterations) of an OpenFOAM log, the legs of a
+    run continued after a kill counted (foamCaseFiles.read_log); 0 without
+    the log."""
     if not os.path.isfile(log):
         return 0
-    with open(log) as f:
-        return sum(1 for line in f if line.startswith("Time ="))
+    return read_log(log)["steps"]
 
 
 def sph_series(case):
