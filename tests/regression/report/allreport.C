@@ -214,6 +214,10 @@ TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
     ASSERT_NE(killedLog.find("\nEnd\n"), std::string::npos) << killedLog;
     killedLog.erase(killedLog.find("\nEnd\n") + 1);
     sphTest::writeFile(tank/"log.isphFoam", killedLog);
+    // A run that stopped loudly ended: its log is not a kill's, it stays
+    const std::string stoppedLog =
+        "Exec   : wcsphFoam\n\n--> FOAM FATAL ERROR: \nSpeed 9 m/s, more than maxSpeed\n";
+    sphTest::writeFile(tank/"log.wcsphFoam", stoppedLog);
     // The log of a kill before that one, set aside then: it must stay
     const std::string earlierLog = "Exec   : isphFoam\nStarting time loop\n";
     sphTest::writeFile(tank/"log.isphFoam.unfinished", earlierLog);
@@ -238,6 +242,8 @@ TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
         "(startFrom latestTime)"), std::string::npos) << out;
     EXPECT_EQ(readAll(tank/"log.isphFoam.unfinished1"), killedLog);
     EXPECT_EQ(readAll(tank/"log.isphFoam.unfinished"), earlierLog);
+    EXPECT_EQ(readAll(tank/"log.wcsphFoam"), stoppedLog);
+    EXPECT_FALSE(isFile(tank/"log.wcsphFoam.unfinished"));
     const std::string resumed = readAll(tank/"log.isphFoam");
     EXPECT_NE(resumed.find("Skipping the incomplete time directory"), std::string::npos)
         << resumed;
