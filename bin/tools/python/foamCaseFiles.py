@@ -41,10 +41,11 @@ def read_numeric_entries(path, required=()):
 
 
 def read_log(path, until=None):
-    """{cpu, clock, t, steps, end, start} of a solver log: the last
+    """{cpu, clock, t, steps, summary, end, start} of a solver log: the last
     ExecutionTime/ClockTime, the last 'Time =', the number of steps (an SPH
     solver's 'Steps N' summary, the step a failure names, else the count
-    of 'Time =' lines), whether it reached 'End', and the time it started
+    of 'Time =' lines; summary says which), whether it reached 'End', and
+    the time it started
     from (an SPH solver's 'Restarting from ".../<time>/lagrangian/...', else
     0; of an OpenFOAM solver, whose log does not say, the written time
     before its first step when a killed leg's log is kept beside it);
@@ -87,12 +88,15 @@ def read_log(path, until=None):
                 out["end"] = True
             elif m := restart.match(line):
                 out["start"] = float(m.group(1))
-    if "sphSteps" in out:
+    # summary: the steps are the SPH solver's own count, not 'Time =' lines
+    out["summary"] = "sphSteps" in out
+    if out["summary"]:
         out["steps"] = out.pop("sphSteps")
-    if out["start"] == 0 and kept_logs(path):
+    if out["start"] == 0 and (first is not None or out["end"]) and kept_logs(path):
         # An OpenFOAM solver says nothing of where it started: the written
         # time before its first step, when a killed leg's log is kept (a
-        # leg without a step started at the latest written time)
+        # leg that ended without a step started at the latest written time;
+        # one killed before its first step says nothing)
         folder = os.path.dirname(path) or "."
         before = [float(n) for n in time_dirs(folder)
                   if first is None or float(n) < first*(1 - 1e-9)]
@@ -126,9 +130,11 @@ def add_earlier_legs(path, out):
     the restart."""
     folder = os.path.dirname(path) or "."
     for leg in kept_logs(path):
-        whole = read_log(leg)
-        if whole["start"] < out["start"] and whole["t"] >= out["start"]*(1 - 1e-9):
-            before = read_log(leg, until=out["start"])
+        # One read up to the restart: it went past it (steps None) or
+        # stopped on it; each read adds that leg's own earlier legs
+        before = read_log(leg, until=out["start"])
+        reached = before["steps"] is None or before["t"] >= out["start"]*(1 - 1e-9)
+        if before["start"] < out["start"] and reached:
             if before["cpu"] == before["cpu"]:
                 # A leg that started at its end time (killed after its last
                 # write, before End) takes no step and prints no seconds
