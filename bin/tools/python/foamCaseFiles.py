@@ -129,27 +129,36 @@ def add_earlier_legs(path, out):
     own. Without such a log it says on stderr that its figures are from
     the restart."""
     folder = os.path.dirname(path) or "."
-    for leg in kept_logs(path):
-        # One read up to the restart: it went past it (steps None) or
-        # stopped on it; each read adds that leg's own earlier legs
-        before = read_log(leg, until=out["start"])
-        reached = before["steps"] is None or before["t"] >= out["start"]*(1 - 1e-9)
-        if before["start"] < out["start"] and reached:
-            if before["cpu"] == before["cpu"]:
-                # A leg that started at its end time (killed after its last
-                # write, before End) takes no step and prints no seconds
-                for key in ("cpu", "clock"):
-                    if out[key] != out[key] and out["end"]:
-                        out[key] = 0.0
-                    out[key] += before[key]
-                index = read_time_index(folder, out["start"])
-                if index is not None and out["steps"] is not None:
-                    out["steps"] += index
-                out["legs"] = 1 + before.get("legs", 1)
-                return
+    leg, before = earlier_leg(path, out["start"])
+    if leg:
+        # A leg that started at its end time (killed after its last
+        # write, before End) takes no step and prints no seconds
+        for key in ("cpu", "clock"):
+            if out[key] != out[key] and out["end"]:
+                out[key] = 0.0
+            out[key] += before[key]
+        index = read_time_index(folder, out["start"])
+        if index is not None and out["steps"] is not None:
+            out["steps"] += index
+        out["legs"] = 1 + before.get("legs", 1)
+        return
     print("%s: restarts at t = %g s: its CPU and clock seconds and steps are"
           " from there (no kept log of the run before it)" % (path, out["start"]),
           file=sys.stderr)
+
+
+def earlier_leg(path, start):
+    """The kept log (<log>.unfinished[N] beside path, older than it) of the
+    leg a run restarting at start came from, and read_log's summary of it
+    up to start (with its own earlier legs): the newest that reached start
+    (went past it, steps None, or stopped on it) and timed a step; (None,
+    None) without one."""
+    for leg in kept_logs(path):
+        before = read_log(leg, until=start)
+        reached = before["steps"] is None or before["t"] >= start*(1 - 1e-9)
+        if before["start"] < start and reached and before["cpu"] == before["cpu"]:
+            return leg, before
+    return None, None
 
 
 def read_time_index(case, t):

@@ -60,12 +60,6 @@ std::string slug(const std::string& name)
     return s;
 }
 
-std::string readAll(const fileName& path)
-{
-    std::ifstream is(path);
-    return std::string(std::istreambuf_iterator<char>(is), {});
-}
-
 } // End anonymous namespace
 
 
@@ -91,8 +85,8 @@ TEST(allreport, quickFormWritesEveryCaseWithItsFigureInFifteenMinutes)
     const fileName page = out/"index.html";
     ASSERT_TRUE(isFile(page)) << log;
     ASSERT_TRUE(isFile(out/"summary.md")) << log;
-    const std::string html = readAll(page);
-    const std::string md = readAll(out/"summary.md");
+    const std::string html = sphTest::readFile(page);
+    const std::string md = sphTest::readFile(out/"summary.md");
     for (const std::string& name : cases)
     {
         const std::string png = slug(name) + ".png";
@@ -210,7 +204,7 @@ TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
         ),
         0
     ) << out;
-    std::string killedLog = readAll(tank/"log.isphFoam");
+    std::string killedLog = sphTest::readFile(tank/"log.isphFoam");
     ASSERT_NE(killedLog.find("\nEnd\n"), std::string::npos) << killedLog;
     killedLog.erase(killedLog.find("\nEnd\n") + 1);
     sphTest::writeFile(tank/"log.isphFoam", killedLog);
@@ -240,11 +234,11 @@ TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
         "log.isphFoam.unfinished1"), std::string::npos) << out;
     EXPECT_NE(out.find("hydrostaticTank: it goes on from its latest time, 0.3 "
         "(startFrom latestTime)"), std::string::npos) << out;
-    EXPECT_EQ(readAll(tank/"log.isphFoam.unfinished1"), killedLog);
-    EXPECT_EQ(readAll(tank/"log.isphFoam.unfinished"), earlierLog);
-    EXPECT_EQ(readAll(tank/"log.wcsphFoam"), stoppedLog);
+    EXPECT_EQ(sphTest::readFile(tank/"log.isphFoam.unfinished1"), killedLog);
+    EXPECT_EQ(sphTest::readFile(tank/"log.isphFoam.unfinished"), earlierLog);
+    EXPECT_EQ(sphTest::readFile(tank/"log.wcsphFoam"), stoppedLog);
     EXPECT_FALSE(isFile(tank/"log.wcsphFoam.unfinished"));
-    const std::string resumed = readAll(tank/"log.isphFoam");
+    const std::string resumed = sphTest::readFile(tank/"log.isphFoam");
     EXPECT_NE(resumed.find("Skipping the incomplete time directory"), std::string::npos)
         << resumed;
     EXPECT_NE(resumed.find("Restarting from \"" + tank + "/0.3/lagrangian/sph\""),
@@ -252,14 +246,14 @@ TEST(allreport, aKilledFullFormGoesOnAndKeepsWhatWasWritten)
     EXPECT_NE(resumed.find("\nEnd\n"), std::string::npos);
     EXPECT_TRUE(isFile(tank/"0.5"/"lagrangian"/"sph"/"positions"));
     // The tutorial's own controlDict (in the repository) is as it was
-    const std::string dict = readAll(tank/"system"/"controlDict");
+    const std::string dict = sphTest::readFile(tank/"system"/"controlDict");
     EXPECT_NE(dict.find("\nstartFrom       startTime;"), std::string::npos) << dict;
     EXPECT_EQ(dict.find("skipIncompleteTimes"), std::string::npos) << dict;
     EXPECT_FALSE(isFile(tank/"log.Allreport.continued"));
     EXPECT_FALSE(isFile(tank/"log.Allreport.inProgress"));
-    EXPECT_NE(readAll(dir/"report"/"runs.tsv").find("\tran\t"), std::string::npos);
-    EXPECT_NE(readAll(tank/"errors.csv").find("hydrostaticTank,ISPH-USAW"), std::string::npos)
-        << readAll(tank/"errors.csv");
+    EXPECT_NE(sphTest::readFile(dir/"report"/"runs.tsv").find("\tran\t"), std::string::npos);
+    EXPECT_NE(sphTest::readFile(tank/"errors.csv").find("hydrostaticTank,ISPH-USAW"), std::string::npos)
+        << sphTest::readFile(tank/"errors.csv");
 
     // The compare scripts' log reader adds the killed leg (kept beside the
     // log) up to the restart: the steps from 0, the CPU of both legs
@@ -380,12 +374,12 @@ TEST(allreport, thePageSaysWhatTheRunsItShowsCost)
         ),
         0
     ) << out;
-    const std::string md = readAll(dir/"out"/"summary.md");
+    const std::string md = sphTest::readFile(dir/"out"/"summary.md");
     const std::string cost =
         "4 runs: 162 s of solver CPU (0.0 h), 192 s of wall clock; "
         "1 without a CPU time, not counted.";
     EXPECT_NE(md.find("The page shows " + cost), std::string::npos) << md;
     EXPECT_NE(md.find("The rows below come from " + cost), std::string::npos) << md;
-    EXPECT_NE(readAll(dir/"out"/"index.html").find("The page shows " + cost),
+    EXPECT_NE(sphTest::readFile(dir/"out"/"index.html").find("The page shows " + cost),
         std::string::npos);
 }

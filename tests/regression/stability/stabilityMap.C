@@ -10,8 +10,9 @@ Description
     on purpose must stop loudly, naming the solver settings; with
     stopIfNotConverged no it must run; the large time steps with
     retryOnFailure must count their retries; the still tanks at rest for
-    2 t sqrt(g/H) must stay hydrostatic within 5 % of rho g H. A second
-    test: -resume reuses the rows that ended and runs the killed one again.
+    2 t sqrt(g/H) must stay hydrostatic within 5 % of rho g H. Two more
+    tests: -resume reuses the rows that ended and runs the unfinished one
+    again, and a killed run goes on from its latest write.
 
 \*---------------------------------------------------------------------------*/
 
@@ -150,6 +151,61 @@ TEST(stabilityMap, resumeRunsOnlyTheRowsThatDidNotEnd)
         EXPECT_EQ(after.at(name).at("cause"), r.at("cause")) << name;
     }
     EXPECT_EQ(after.at("viscousTank_isph").at("error"), before.at("viscousTank_isph").at("error"));
+}
+
+
+TEST(stabilityMap, resumeGoesOnFromTheKilledRunsLatestWrite)
+{
+    // A row of the full form can take longer than the machine stays up:
+    // killed, it must go on from its latest write (not from its first step,
+    // or it would never end), and the table must count the legs as one
+    // run. The large step with retries stops at 0.07125 s after 9 retries
+    // (6 before that write); its log cut before the FOAM FATAL error is
+    // what a kill during the last retries leaves. logInterval 1 so that
+    // the kept leg's log shows the time it reached.
+    const fileName dir = sphTest::copyTutorial("stability", "stabilityKilled");
+    rmDir(dir/"runs");
+    const std::string row = " -quick -only largeStepRetry_isph -resume";
+    const fileName run = dir/"runs"/"quick"/"largeStepRetry_isph";
+    std::string first, again, second;
+    ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun" + row, first), 0) << first;
+    const auto whole = readTable(dir/"results"/"stability.csv").at("largeStepRetry_isph");
+    ASSERT_EQ(whole.at("outcome"), "stopped");
+    ASSERT_EQ(whole.at("retries"), "9");
+
+    ASSERT_EQ
+    (
+        sphTest::runWithBashrc
+        (
+            "cd " + run + " && sed -i 's/^logInterval .*/logInterval 1;/'"
+            " system/controlDict && rm -r 0.07125 outcome.json"
+            " && (isphFoam > log.isphFoam 2>&1; test $? = 1)",
+            again
+        ),
+        0
+    ) << again;
+    std::string killedLog = sphTest::readFile(run/"log.isphFoam");
+    ASSERT_NE(killedLog.find("--> FOAM FATAL"), std::string::npos);
+    killedLog.erase(killedLog.find("--> FOAM FATAL"));
+    sphTest::writeFile(run/"log.isphFoam", killedLog);
+
+    ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun" + row, second), 0) << second;
+    EXPECT_NE(second.find("killed before it ended: it goes on from its write at"
+        " t = 0.07125 s (its log kept as log.isphFoam.unfinished)"),
+        std::string::npos) << second;
+    // Kept, so the case was not made again (that clears the folder)
+    EXPECT_EQ(sphTest::readFile(run/"log.isphFoam.unfinished"), killedLog);
+    const std::string resumed = sphTest::readFile(run/"log.isphFoam");
+    EXPECT_NE(resumed.find("Restarting from \"" + run + "/0.07125/lagrangian/sph\""),
+        std::string::npos) << resumed;
+
+    const auto legs = readTable(dir/"results"/"stability.csv").at("largeStepRetry_isph");
+    EXPECT_EQ(legs.at("outcome"), "stopped");
+    EXPECT_EQ(legs.at("reached"), whole.at("reached"));
+    EXPECT_EQ(legs.at("retries"), whole.at("retries"));
+    EXPECT_EQ(legs.at("cause").find(whole.at("cause")), 0u) << legs.at("cause");
+    EXPECT_NE(legs.at("cause").find("killed, went on from its write at t = 0.07125 s"),
+        std::string::npos) << legs.at("cause");
 }
 
 
