@@ -28,6 +28,23 @@ bool Foam::SPH::fluidLimit::passes(const scalar v, const scalar t) const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::SPH::fluidLimit::writeState(Ostream& os) const
+{
+    os.writeEntry(stateEntry(), Pair<scalar>(reached_, tReached_));
+}
+
+
+void Foam::SPH::fluidLimit::readState(const dictionary& state)
+{
+    Pair<scalar> reached(-1, 0);
+    if (state.readIfPresent(stateEntry(), reached))
+    {
+        reached_ = reached.first();
+        tReached_ = reached.second();
+    }
+}
+
+
 void Foam::SPH::fluidLimit::accept()
 {
     if (stepValue_ > reached_)

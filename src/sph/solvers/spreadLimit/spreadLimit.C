@@ -134,8 +134,7 @@ Foam::SPH::spreadLimit::spreadLimit
             " particles' volumes (1/mean kernel sum - 1)"
         )
     ),
-    surface_(surface),
-    measuredIndex_(-1)
+    surface_(surface)
 {}
 
 
@@ -169,15 +168,15 @@ Foam::label Foam::SPH::spreadLimit::find
     string& what
 ) const
 {
+    // Steps 1, 101, 201, ... of the run, by its time index: a restarted
+    // run measures where the run it goes on from would have (a retried
+    // step keeps its index, and is measured again)
     const label index = runTime.timeIndex();
-    if (measuredIndex_ >= 0 && index < measuredIndex_ + interval) return -1;
-    measuredIndex_ = index;
+    if (index > 1 && (index - 1) % interval != 0) return -1;
     label nWhole = 0;
     const scalar s = spread(cloud, nWhole, surface_);
     if (passes(s, runTime.value())) return -1;
 
-    // A retried step (retryOnFailure) is measured again
-    measuredIndex_ = -1;
     what =
         "The fluid takes " + Foam::name(1 + s) + " times the room its"
         " particles' volumes fill (mean kernel sum of " + Foam::name(nWhole)

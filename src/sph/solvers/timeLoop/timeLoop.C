@@ -12,6 +12,7 @@
 #include "wallCrossing.H"
 #include "IOdictionary.H"
 #include "OFstream.H"
+#include "labelPair.H"
 #include "OSspecific.H"
 #include "sigFpe.H"
 #include "sphFoamVersion.H"
@@ -45,6 +46,7 @@ Foam::SPH::timeLoop::timeLoop(Time& runTime, sphSolver& solver)
     ),
     nRetries_(0),
     nRescued_(0),
+    nRetriesStart_(0),
     writeTimeIndexStart_(0),
     sortInterval_(0),
     nSorts_(0),
@@ -102,6 +104,16 @@ void Foam::SPH::timeLoop::readState()
     const IOdictionary state(io);
     lastDeltaT_ = state.getOrDefault<scalar>("deltaT", -1);
     timeStart_ = runTime_.value();
+    // The run's figures go on through a restart: the summary at the end is
+    // the whole run's, not the last leg's
+    for (fluidLimit& limit : limits_)
+    {
+        limit.readState(state);
+    }
+    labelPair retries(0, 0);
+    state.readIfPresent("retries", retries);
+    nRetries_ = retries.first();
+    nRescued_ = retries.second();
     solver_.readState(state);
 }
 
@@ -119,6 +131,15 @@ bool Foam::SPH::timeLoop::writeState() const
     ).writeHeader(os, "dictionary");
     solver_.writeState(os);
     os.writeEntry("deltaT", lastDeltaT_);
+    for (const fluidLimit& limit : limits_)
+    {
+        limit.writeState(os);
+    }
+    if (maxRetries_ > 0)
+    {
+        // Steps retried and rescued (retryOnFailure)
+        os.writeEntry("retries", labelPair(nRetries_, nRescued_));
+    }
     timeClock::write(os, runTime_);
     IOobject::writeEndDivider(os);
     return os.good();
@@ -329,7 +350,16 @@ void Foam::SPH::timeLoop::fail
         lastDeltaT_ = lastDeltaTStart_;
     }
     runTime_.setTime(timeStart_, runTime_.timeIndex() - 1);
-    writeTime();
+    {
+        // Its retries come after the state written; the summary has them
+        const label nRetries = nRetries_;
+        nRetries_ = nRetriesStart_;
+        writeTime();
+        nRetries_ = nRetries;
+    }
+    // The run's figures up to the stop, as at an end (a restart from the
+    // state written goes on with them)
+    printSummary();
 
     FatalErrorInFunction
         << what.c_str() << where(i).c_str() << nl
@@ -418,6 +448,7 @@ void Foam::SPH::timeLoop::retryHalved(const string& what, const label bad)
 
 void Foam::SPH::timeLoop::step()
 {
+    nRetriesStart_ = nRetries_;
     checkCollapse();
     solver_.cloud().parts().save(start_);
     solver_.saveState(start_);

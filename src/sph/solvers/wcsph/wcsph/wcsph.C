@@ -462,6 +462,13 @@ void Foam::SPH::wcsph::restoreState()
 void Foam::SPH::wcsph::writeState(Ostream& os) const
 {
     if (bodyForces_) bodyForces_->write();
+    bounds_.writeState(os);
+}
+
+
+void Foam::SPH::wcsph::readState(const dictionary& dict)
+{
+    bounds_.readState(dict);
 }
 
 

@@ -224,6 +224,29 @@ void Foam::SPH::wcsphBounds::afterStep(const Time& runTime)
 }
 
 
+void Foam::SPH::wcsphBounds::writeState(Ostream& os) const
+{
+    os.writeEntry("rhoMinReached", Pair<scalar>(rhoMinReached_, tRhoMin_));
+    os.writeEntry("rhoMaxReached", Pair<scalar>(rhoMaxReached_, tRhoMax_));
+    os.writeEntry("machReached", Pair<scalar>(machReached_, tMach_));
+}
+
+
+void Foam::SPH::wcsphBounds::readState(const dictionary& state)
+{
+    const auto read = [&](const word& key, scalar& value, scalar& t)
+    {
+        Pair<scalar> reached(value, t);
+        state.readIfPresent(key, reached);
+        value = reached.first();
+        t = reached.second();
+    };
+    read("rhoMinReached", rhoMinReached_, tRhoMin_);
+    read("rhoMaxReached", rhoMaxReached_, tRhoMax_);
+    read("machReached", machReached_, tMach_);
+}
+
+
 void Foam::SPH::wcsphBounds::printSummary(Ostream& os) const
 {
     if (machReached_ <= 0 && rhoMaxReached_ < 0) return;
