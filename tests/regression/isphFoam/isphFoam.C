@@ -468,6 +468,11 @@ TEST(isphFoam, retryOnFailureTakesAFailedStepAgainWithHalfTheTimeStep)
     ASSERT_EQ(mesh(dir, out), 0) << out;
     EXPECT_EQ(solve(dir, out), 1) << tail(out);
     EXPECT_NE(out.find("more than maxStepDisplacement"), std::string::npos) << tail(out);
+    // A loud stop prints the run's figures up to it before the error
+    const std::size_t stop = out.find("--> FOAM FATAL");
+    ASSERT_NE(stop, std::string::npos) << tail(out);
+    EXPECT_LT(out.find("Largest move in a step: "), stop) << tail(out);
+    EXPECT_LT(out.find("Largest fluid speed: "), stop) << tail(out);
 
     // With retries each failed step is taken again from its start, and the
     // write grid of writeControl adjustable is kept
@@ -657,6 +662,10 @@ TEST(isphFoam, boomerAMGIsRebuiltEveryStepWithAFreeSurfaceUnlessTheCaseSaysReuse
 
     const counts every = runWith("preconditioner  BoomerAMG;", "1");
     EXPECT_TRUE(every.named) << out;
+    // hypre's MPI is finalised by the solver: OpenFOAM's end of main has
+    // nothing to warn of after End
+    EXPECT_EQ(out.find("Finalizing MPI"), std::string::npos) << tail(out);
+    EXPECT_EQ(out.substr(out.rfind("\nEnd\n")), "\nEnd\n\n") << tail(out);
     EXPECT_GT(every.solves, 10);
     EXPECT_EQ(every.builds, every.solves) << tail(out);
 

@@ -75,17 +75,21 @@ int hypreSmoother(Foam::SPH::BoomerAMG::smootherType t)
 
 
 // hypre needs MPI. A parallel OpenFOAM run has initialised it; a serial
-// run has not, and then it is started here, once, and finalised at exit
-// (after every hypre object, which live no longer than main).
-void finaliseMPI()
+// run has not, and then it is started here, once, and finalised by the
+// solver's end (BoomerAMG::finalise) or at exit, after every hypre object
+bool hypreStarted = false;
+bool mpiStartedHere = false;
+
+void finaliseHypre()
 {
     int finalised = 0;
     MPI_Finalized(&finalised);
-    if (!finalised)
+    if (!finalised && mpiStartedHere)
     {
-        HYPRE_Finalize();
+        if (hypreStarted) HYPRE_Finalize();
         MPI_Finalize();
     }
+    hypreStarted = mpiStartedHere = false;
 }
 
 void initialiseHypre()
@@ -97,9 +101,11 @@ void initialiseHypre()
         if (!initialised)
         {
             MPI_Init(nullptr, nullptr);
-            std::atexit(finaliseMPI);
+            mpiStartedHere = true;
+            std::atexit(finaliseHypre);
         }
         HYPRE_Init();
+        hypreStarted = true;
         return true;
     }();
     (void)done;
@@ -176,6 +182,12 @@ Foam::SPH::BoomerAMG::hierarchy::hypreObjects::hypreObjects
     HYPRE_BoomerAMGSetRelaxType(amg, hypreSmoother(c.smoother));
     HYPRE_BoomerAMGSetNumSweeps(amg, c.nSweeps);
     HYPRE_BoomerAMGSetAggNumLevels(amg, c.aggressiveLevels);
+}
+
+
+void Foam::SPH::BoomerAMG::finalise()
+{
+    finaliseHypre();
 }
 
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "solverMain.H"
+#include "BoomerAMG.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
 
@@ -48,6 +49,12 @@ void Foam::SPH::checkUnreadFiles
             << " flow only (simulationType laminar, or no file); isphFoam"
             << " has the RAS model kEpsilon" << exit(FatalIOError);
     }
+}
+
+
+void Foam::SPH::finishRun()
+{
+    BoomerAMG::finalise();
 }
 
 
