@@ -206,6 +206,20 @@ TEST(stabilityMap, resumeGoesOnFromTheKilledRunsLatestWrite)
     EXPECT_EQ(legs.at("cause").find(whole.at("cause")), 0u) << legs.at("cause");
     EXPECT_NE(legs.at("cause").find("killed, went on from its write at t = 0.07125 s"),
         std::string::npos) << legs.at("cause");
+
+    // Killed after the run ended, before the map wrote its outcome: judged
+    // from what it left, not run again
+    const std::string resumedLog = sphTest::readFile(run/"log.isphFoam");
+    rm(run/"outcome.json");
+    std::string third;
+    ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun" + row, third), 0) << third;
+    EXPECT_NE(third.find("it ended before the map recorded it"), std::string::npos) << third;
+    EXPECT_EQ(sphTest::readFile(run/"log.isphFoam"), resumedLog);
+    const auto judged = readTable(dir/"results"/"stability.csv").at("largeStepRetry_isph");
+    for (const char* column : {"outcome", "reached", "retries", "cause"})
+    {
+        EXPECT_EQ(judged.at(column), legs.at(column)) << column;
+    }
 }
 
 
