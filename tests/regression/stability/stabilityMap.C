@@ -124,7 +124,7 @@ TEST(stabilityMap, quickFormHasNoSilentFailure)
 TEST(stabilityMap, resumeRunsOnlyTheRowsThatDidNotEnd)
 {
     // The full map runs for hours: -resume reuses each row whose run ended
-    // (its outcome.json) and runs again the one that was killed (none)
+    // (its outcome.json), and runs again one whose case was not made for it
     const fileName dir = sphTest::copyTutorial("stability", "stabilityResume");
     rmDir(dir/"runs");
     const std::string rows = " -quick -only viscousTank_isph hardSolve_isph -resume";
@@ -133,15 +133,28 @@ TEST(stabilityMap, resumeRunsOnlyTheRowsThatDidNotEnd)
     EXPECT_EQ(first.find("reusing its outcome"), std::string::npos) << first;
     const auto before = readTable(dir/"results"/"stability.csv");
 
-    // The second row as a killed run leaves it: its outcome never written
+    // The second row's outcome never written, and its case taken for
+    // another row's (row.json): it runs again
     rm(dir/"runs"/"quick"/"hardSolve_isph"/"outcome.json");
+    sphTest::writeFile
+    (
+        dir/"runs"/"quick"/"hardSolve_isph"/"row.json",
+        "{\"name\": \"hardSolve_isph\", \"solver\": \"isphFoam\", \"setting\": \"old\"}"
+    );
     ASSERT_EQ(sphTest::runWithBashrc(dir + "/Allrun" + rows, second), 0) << second;
     EXPECT_NE
     (
         second.find("viscousTank_isph/outcome.json"), std::string::npos
     ) << second;
     EXPECT_EQ(second.find("hardSolve_isph/outcome.json"), std::string::npos) << second;
+    EXPECT_EQ(second.find("judged from its log"), std::string::npos) << second;
     EXPECT_TRUE(isFile(dir/"runs"/"quick"/"hardSolve_isph"/"outcome.json"));
+    EXPECT_NE
+    (
+        sphTest::readFile(dir/"runs"/"quick"/"hardSolve_isph"/"row.json")
+            .find("p tolerance 1e-12, maxIter 20"),
+        std::string::npos
+    );
 
     const auto after = readTable(dir/"results"/"stability.csv");
     ASSERT_EQ(after.size(), 2u);
